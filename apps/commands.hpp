@@ -1,0 +1,10 @@
+#pragma once
+// Each `covsim` subcommand registers itself on the application; the work is done by the
+// libraries, so commands only parse arguments and print.
+#include <CLI/CLI.hpp>
+
+namespace covsim::app {
+
+void add_kernel_demo_command(CLI::App& app);
+
+}  // namespace covsim::app

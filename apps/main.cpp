@@ -1,0 +1,25 @@
+// covsim: the command-line front end. Exit codes: 0 success, 1 a run failed, 2 bad input.
+#include <exception>
+#include <iostream>
+
+#include "apps/commands.hpp"
+#include "apps/input_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"covsim: discrete-event simulation of multi-robot Voronoi coverage"};
+  app.require_subcommand(1);
+  covsim::app::add_kernel_demo_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const covsim::app::InputError& e) {
+    std::cerr << "covsim: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "covsim: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

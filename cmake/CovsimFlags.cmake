@@ -1,0 +1,20 @@
+# Compiler flags shared by every covsim target.
+# -ffp-contract=off keeps a*b+c from being fused differently by different builds, so
+# results and fingerprints are bit-identical across optimisation levels; never -ffast-math.
+find_program(CCACHE_PROGRAM ccache)
+if(CCACHE_PROGRAM)
+  set(CMAKE_CXX_COMPILER_LAUNCHER "${CCACHE_PROGRAM}")
+endif()
+
+set(CMAKE_CXX_FLAGS_RELEASE "-O2 -DNDEBUG")
+set(CMAKE_CXX_FLAGS_RELWITHDEBINFO "-O2 -g")
+
+add_library(covsim_flags INTERFACE)
+add_library(covsim::flags ALIAS covsim_flags)
+target_compile_options(covsim_flags INTERFACE -Wall -Wextra -Wpedantic -ffp-contract=off
+                                              -fno-fast-math)
+if(COVSIM_SANITIZE)
+  target_compile_options(covsim_flags INTERFACE -fsanitize=address,undefined
+                                                -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_link_options(covsim_flags INTERFACE -fsanitize=address,undefined)
+endif()

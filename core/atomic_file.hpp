@@ -1,0 +1,30 @@
+#pragma once
+// An output file that appears only when complete: written to "PATH.partial" and renamed
+// to PATH by commit(). If the writer is destroyed without commit (an error, an exception),
+// the partial file is removed, so a failed run never leaves half-written output behind.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace covsim {
+
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path path);
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  ~AtomicFile();
+
+  std::ostream& stream() { return out_; }
+  // Flushes, checks every write succeeded, and renames into place; throws on failure.
+  void commit();
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+  std::filesystem::path partial_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+}  // namespace covsim

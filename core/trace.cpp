@@ -1,0 +1,132 @@
+#include "core/trace.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/fingerprint.hpp"
+
+namespace covsim {
+
+namespace {
+constexpr std::string_view kMagic = "covsim-trace";
+constexpr std::size_t kFlushBytes = 1 << 16;
+
+bool valid_key(const std::string& key) {
+  return !key.empty() && key.find_first_of(" \t\n") == std::string::npos && key != "events";
+}
+}  // namespace
+
+TraceWriter::TraceWriter(std::filesystem::path path, const TraceHeader& header)
+    : file_(std::move(path)) {
+  fmt::format_to(std::back_inserter(buffer_), "{} {}\nseed {}\nscenario_hash {}\n", kMagic,
+                 header.version, header.seed, Fingerprint::to_hex(header.scenario_hash));
+  for (const auto& [key, value] : header.entries) {
+    if (!valid_key(key) || value.find('\n') != std::string::npos) {
+      throw std::invalid_argument("trace header entry '" + key +
+                                  "' is not a key without spaces and a one-line value");
+    }
+    fmt::format_to(std::back_inserter(buffer_), "{} {}\n", key, value);
+  }
+  buffer_ += "events\n";
+}
+
+void TraceWriter::record(std::uint64_t index, SimTime t, const std::string& kind,
+                         std::uint32_t entity, std::uint64_t fingerprint) {
+  fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {:016x}\n", index, t.ns(), kind, entity,
+                 fingerprint);
+  if (buffer_.size() >= kFlushBytes) flush_buffer();
+}
+
+void TraceWriter::flush_buffer() {
+  file_.stream().write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  buffer_.clear();
+}
+
+void TraceWriter::commit() {
+  flush_buffer();
+  file_.commit();
+}
+
+TraceReader::TraceReader(std::filesystem::path path) : path_(std::move(path)), in_(path_) {
+  if (!in_) throw std::runtime_error(path_.string() + ": cannot open trace");
+  std::string line;
+  auto next_line = [&]() -> bool {
+    if (!std::getline(in_, line)) return false;
+    ++line_;
+    return true;
+  };
+  if (!next_line() || line.rfind(std::string(kMagic) + " ", 0) != 0) {
+    fail("expected '" + std::string(kMagic) + " <version>' on the first line");
+  }
+  const std::string version = line.substr(kMagic.size() + 1);
+  if (version != "1")
+    fail("unsupported trace format version '" + version + "' (this reader knows 1)");
+  bool have_seed = false, have_hash = false;
+  for (;;) {
+    if (!next_line()) fail("header ends without an 'events' line");
+    if (line == "events") break;
+    const auto space = line.find(' ');
+    if (space == std::string::npos) fail("expected '<key> <value>' in the header");
+    std::string key = line.substr(0, space);
+    std::string value = line.substr(space + 1);
+    if (key == "seed") {
+      auto [p, ec] = std::from_chars(value.data(), value.data() + value.size(), header_.seed);
+      if (ec != std::errc() || p != value.data() + value.size())
+        fail("seed is not an unsigned integer");
+      have_seed = true;
+    } else if (key == "scenario_hash") {
+      auto h = Fingerprint::parse_hex(value);
+      if (!h) fail("scenario_hash is not 16 hex digits");
+      header_.scenario_hash = *h;
+      have_hash = true;
+    } else {
+      header_.entries.emplace_back(std::move(key), std::move(value));
+    }
+  }
+  if (!have_seed || !have_hash) fail("header lacks 'seed' or 'scenario_hash'");
+}
+
+void TraceReader::fail(const std::string& what) const {
+  throw std::runtime_error(path_.string() + ":" + std::to_string(line_) + ": " + what);
+}
+
+std::optional<TraceRecord> TraceReader::next() {
+  std::string line;
+  if (!std::getline(in_, line)) return std::nullopt;
+  ++line_;
+  TraceRecord r;
+  const char* p = line.data();
+  const char* end = line.data() + line.size();
+  auto field = [&](auto& out) {
+    auto [q, ec] = std::from_chars(p, end, out);
+    if (ec != std::errc() || (q != end && *q != ' ')) fail("malformed event record");
+    p = (q == end) ? q : q + 1;
+  };
+  std::int64_t ns = 0;
+  field(r.index);
+  field(ns);
+  r.time = SimTime::from_ns(ns);
+  const char* kind_end = std::find(p, end, ' ');
+  if (kind_end == p || kind_end == end) fail("malformed event record");
+  r.kind.assign(p, kind_end);
+  p = kind_end + 1;
+  field(r.entity);
+  auto fp = Fingerprint::parse_hex(std::string_view(p, static_cast<std::size_t>(end - p)));
+  if (!fp) fail("event record's fingerprint is not 16 hex digits");
+  r.fingerprint = *fp;
+  return r;
+}
+
+std::optional<TraceDivergence> first_divergence(TraceReader& a, TraceReader& b) {
+  for (std::uint64_t i = 0;; ++i) {
+    std::optional<TraceRecord> ra = a.next();
+    std::optional<TraceRecord> rb = b.next();
+    if (!ra && !rb) return std::nullopt;
+    if (ra != rb) return TraceDivergence{i, std::move(ra), std::move(rb)};
+  }
+}
+
+}  // namespace covsim

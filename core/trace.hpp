@@ -1,0 +1,81 @@
+#pragma once
+// The event trace: a line-oriented text file, so that two traces can also be compared with
+// ordinary tools. Format version 1:
+//
+//   covsim-trace 1
+//   seed <decimal>
+//   scenario_hash <16 hex digits>
+//   <key> <value>              (further header entries, one line each, optional)
+//   events
+//   <index> <time_ns> <kind> <entity> <fingerprint, 16 hex digits>
+//   ...
+//
+// Each record carries the running fingerprint after that event, so the first record where
+// two traces differ is the first event where the runs diverged.
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/atomic_file.hpp"
+#include "core/sim_time.hpp"
+
+namespace covsim {
+
+struct TraceHeader {
+  int version = 1;
+  std::uint64_t seed = 0;
+  std::uint64_t scenario_hash = 0;
+  std::vector<std::pair<std::string, std::string>> entries;  // values hold no newline
+};
+
+struct TraceRecord {
+  std::uint64_t index = 0;
+  SimTime time;
+  std::string kind;
+  std::uint32_t entity = 0;
+  std::uint64_t fingerprint = 0;
+  friend bool operator==(const TraceRecord&, const TraceRecord&) = default;
+};
+
+class TraceWriter {
+ public:
+  TraceWriter(std::filesystem::path path, const TraceHeader& header);
+  void record(std::uint64_t index, SimTime t, const std::string& kind, std::uint32_t entity,
+              std::uint64_t fingerprint);
+  // The trace file appears only when committed (see AtomicFile).
+  void commit();
+
+ private:
+  void flush_buffer();
+  AtomicFile file_;
+  std::string buffer_;
+};
+
+class TraceReader {
+ public:
+  // Throws std::runtime_error naming the file and line for anything malformed.
+  explicit TraceReader(std::filesystem::path path);
+  const TraceHeader& header() const { return header_; }
+  std::optional<TraceRecord> next();
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const;
+  std::filesystem::path path_;
+  std::ifstream in_;
+  std::uint64_t line_ = 0;
+  TraceHeader header_;
+};
+
+struct TraceDivergence {
+  std::uint64_t index;              // position of the first differing record
+  std::optional<TraceRecord> a, b;  // nullopt where that trace had already ended
+};
+
+// The first record where the two traces differ, or nullopt if they are equal.
+std::optional<TraceDivergence> first_divergence(TraceReader& a, TraceReader& b);
+
+}  // namespace covsim
