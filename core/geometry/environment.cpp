@@ -1,0 +1,236 @@
+#include "core/geometry/environment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/geometry/convex_polygon.hpp"
+#include "core/geometry/ring_validation.hpp"
+
+namespace covsim {
+
+Environment::Environment(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes) {
+  rings_.push_back(normalize_ring(std::move(outer), ring_name(0), true));
+  for (std::size_t h = 0; h < holes.size(); ++h) {
+    rings_.push_back(normalize_ring(std::move(holes[h]), ring_name(h + 1), false));
+  }
+  check_hole_placement(rings_);
+
+  for (Vec2 p : rings_[0])
+    bounds_.add(p);
+  diameter_ = norm(bounds_.size());
+  tolerance_ = 1e-9 * diameter_;
+  area_ = signed_area(rings_[0]);
+  for (std::size_t h = 1; h < rings_.size(); ++h)
+    area_ += signed_area(rings_[h]);  // negative
+
+  mesh_ = triangulate_free_space(rings_);
+
+  // Boundary edges, with the component of the triangle each one bounds.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> component_of_edge;
+  for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      if (tri.neighbor[static_cast<std::size_t>(i)] != FreeSpaceMesh::kBoundary) continue;
+      const std::uint32_t u = tri.v[static_cast<std::size_t>((i + 1) % 3)];
+      const std::uint32_t w = tri.v[static_cast<std::size_t>((i + 2) % 3)];
+      component_of_edge[{u, w}] = mesh_.component[t];
+    }
+  }
+  std::uint32_t first = 0;
+  for (std::uint32_t r = 0; r < rings_.size(); ++r) {
+    const auto n = static_cast<std::uint32_t>(rings_[r].size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const std::uint32_t u = first + i, w = first + (i + 1) % n;
+      boundary_.push_back(
+          BoundaryEdge{rings_[r][i], rings_[r][(i + 1) % n], r, i, component_of_edge.at({u, w})});
+    }
+    first += n;
+  }
+
+  std::vector<Box> tri_boxes, edge_boxes;
+  for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
+    Box b;
+    for (int i = 0; i < 3; ++i)
+      b.add(mesh_.corner(t, i));
+    tri_boxes.push_back(b);
+  }
+  for (const BoundaryEdge& e : boundary_) {
+    Box b;
+    b.add(e.a);
+    b.add(e.b);
+    edge_boxes.push_back(b);
+  }
+  // Indexed over a slightly larger box, so points just outside Ω (within tolerance) still
+  // find their triangle.
+  const Vec2 margin{4 * tolerance_, 4 * tolerance_};
+  const Box indexed{bounds_.lo - margin, bounds_.hi + margin};
+  triangle_index_ = GridIndex(tri_boxes, indexed, 1.0);
+  edge_index_ = GridIndex(edge_boxes, indexed, 2.0);
+
+  // A cell of the triangle grid is free when no boundary edge comes near it and its centre
+  // is in Ω: then everything in it is in Ω.
+  free_cell_.assign(static_cast<std::size_t>(triangle_index_.nx()) * triangle_index_.ny(), false);
+  for (std::int32_t j = 0; j < triangle_index_.ny(); ++j) {
+    for (std::int32_t i = 0; i < triangle_index_.nx(); ++i) {
+      Box cell = triangle_index_.cell_box(i, j);
+      bool touched = false;
+      edge_index_.query(cell, [&](std::uint32_t e) {
+        Box eb;
+        eb.add(boundary_[e].a);
+        eb.add(boundary_[e].b);
+        touched = touched || eb.overlaps(cell);
+      });
+      if (!touched) {
+        free_cell_[static_cast<std::size_t>(triangle_index_.cell_index(i, j))] =
+            contains(0.5 * (cell.lo + cell.hi));
+      }
+    }
+  }
+}
+
+std::optional<std::uint32_t> Environment::locate(Vec2 p) const {
+  if (!is_finite(p)) return std::nullopt;
+  Box b;
+  b.add(p);
+  std::optional<std::uint32_t> found;
+  triangle_index_.query(b, [&](std::uint32_t t) {
+    if (found) return;
+    for (int i = 0; i < 3; ++i) {
+      const Vec2 a = mesh_.corner(t, i + 1), c = mesh_.corner(t, i + 2);
+      // Signed distance of p from the edge line, positive inside.
+      if (cross(c - a, p - a) < -tolerance_ * norm(c - a)) return;
+    }
+    found = t;
+  });
+  return found;
+}
+
+std::optional<std::uint32_t> Environment::component_of(Vec2 p) const {
+  const auto t = locate(p);
+  if (!t) return std::nullopt;
+  return mesh_.component[*t];
+}
+
+std::optional<std::uint32_t> Environment::nearest_edge(Vec2 p,
+                                                       const std::uint32_t* component) const {
+  // Rings of grid cells outwards from p's cell, until no closer edge can exist.
+  const Vec2 cell = edge_index_.cell_size();
+  const double step = std::min(cell.x, cell.y);
+  Box pb;
+  pb.add(p);
+  const Box& grid = edge_index_.bounds();
+  const Vec2 clamped{std::clamp(p.x, grid.lo.x, grid.hi.x), std::clamp(p.y, grid.lo.y, grid.hi.y)};
+  Box cb;
+  cb.add(clamped);
+  const GridIndex::CellRange home = edge_index_.cells(cb);
+  std::optional<std::uint32_t> best;
+  double best_d2 = INFINITY;
+  const std::int32_t max_ring = std::max(edge_index_.nx(), edge_index_.ny());
+  for (std::int32_t r = 0; r <= max_ring; ++r) {
+    // Cells r rings out are at least (r - 1) * step from p (see the clamping argument in
+    // docs/architecture.md): stop once that exceeds the best distance found.
+    const double bound = std::max(0.0, (r - 1) * step);
+    if (best && bound * bound > best_d2) break;
+    for (std::int32_t j = home.j0 - r; j <= home.j0 + r; ++j) {
+      for (std::int32_t i = home.i0 - r; i <= home.i0 + r; ++i) {
+        if (std::max(std::abs(i - home.i0), std::abs(j - home.j0)) != r) continue;
+        if (i < 0 || j < 0 || i >= edge_index_.nx() || j >= edge_index_.ny()) continue;
+        edge_index_.items_in_cell(i, j, [&](std::uint32_t e) {
+          const BoundaryEdge& edge = boundary_[e];
+          if (component != nullptr && edge.component != *component) return;
+          const double d2 = norm2(project_to_segment(p, edge.a, edge.b).point - p);
+          if (d2 < best_d2 || (d2 == best_d2 && e < *best)) {
+            best_d2 = d2;
+            best = e;
+          }
+        });
+      }
+    }
+  }
+  return best;
+}
+
+Vec2 Environment::closest_point(Vec2 p) const {
+  if (contains(p)) return p;
+  const auto e = nearest_edge(p, nullptr);
+  return project_to_segment(p, boundary_[*e].a, boundary_[*e].b).point;
+}
+
+Vec2 Environment::closest_point(Vec2 p, std::uint32_t component) const {
+  if (component_of(p) == component) return p;
+  const auto e = nearest_edge(p, &component);
+  if (!e) return p;  // no such component
+  return project_to_segment(p, boundary_[*e].a, boundary_[*e].b).point;
+}
+
+std::vector<double> Environment::boundary_crossings(Vec2 a, Vec2 b) const {
+  std::vector<double> ts{0.0, 1.0};
+  const Vec2 d = b - a;
+  const double len = norm(d);
+  Box box;
+  box.add(a);
+  box.add(b);
+  edge_index_.query(box, [&](std::uint32_t e) {
+    const Vec2 p = boundary_[e].a, q = boundary_[e].b;
+    const Vec2 s = q - p;
+    const double denom = cross(d, s);
+    const double scale = len * norm(s);
+    if (std::fabs(denom) > 1e-12 * scale) {
+      const double t = cross(p - a, s) / denom;
+      const double u = cross(p - a, d) / denom;
+      if (t >= 0.0 && t <= 1.0 && u >= -1e-12 && u <= 1.0 + 1e-12) ts.push_back(t);
+    } else if (len > 0.0 && std::fabs(cross(p - a, d)) <= tolerance_ * len) {
+      // Collinear: the overlap's ends split the segment.
+      for (Vec2 v : {p, q}) {
+        const double t = dot(v - a, d) / (len * len);
+        if (t > 0.0 && t < 1.0) ts.push_back(t);
+      }
+    }
+  });
+  std::sort(ts.begin(), ts.end());
+  return ts;
+}
+
+bool Environment::segment_inside(Vec2 a, Vec2 b) const {
+  if (!contains(a) || !contains(b)) return false;
+  const std::vector<double> ts = boundary_crossings(a, b);
+  for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+    if (ts[k + 1] - ts[k] <= 0.0) continue;
+    if (!contains(a + (0.5 * (ts[k] + ts[k + 1])) * (b - a))) return false;
+  }
+  return true;
+}
+
+std::optional<RayHit> Environment::ray_cast(Vec2 origin, Vec2 direction, double range) const {
+  const double dn = norm(direction);
+  if (!(dn > 0.0) || !contains(origin)) return std::nullopt;
+  const Vec2 u = direction / dn;
+  // Beyond the bounding box everything is outside, so an infinite range ends there.
+  const double reach =
+      std::min(range, distance(origin, bounds_.lo) + distance(origin, bounds_.hi) + diameter_);
+  const Vec2 end = origin + reach * u;
+  const std::vector<double> ts = boundary_crossings(origin, end);
+  for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+    if (ts[k + 1] - ts[k] <= 0.0) continue;
+    if (!contains(origin + (0.5 * (ts[k] + ts[k + 1])) * (end - origin))) {
+      const Vec2 hit = origin + ts[k] * (end - origin);
+      // The edge hit: the one nearest the exit point.
+      std::uint32_t edge = 0;
+      double best = INFINITY;
+      Box hb;
+      hb.add(hit);
+      edge_index_.query(hb, [&](std::uint32_t e) {
+        const double d = norm2(project_to_segment(hit, boundary_[e].a, boundary_[e].b).point - hit);
+        if (d < best) {
+          best = d;
+          edge = e;
+        }
+      });
+      return RayHit{hit, ts[k] * reach, edge};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace covsim

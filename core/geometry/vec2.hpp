@@ -1,0 +1,86 @@
+#pragma once
+// A point or vector in the plane. Plain doubles: the hot geometry code works on these.
+#include <cmath>
+
+namespace covsim {
+
+struct Vec2 {
+  double x = 0.0;
+  double y = 0.0;
+
+  constexpr Vec2() = default;
+  constexpr Vec2(double x_, double y_) : x(x_), y(y_) {}
+
+  friend constexpr Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+  friend constexpr Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+  friend constexpr Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
+  friend constexpr Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
+  friend constexpr Vec2 operator*(Vec2 a, double s) { return {s * a.x, s * a.y}; }
+  friend constexpr Vec2 operator/(Vec2 a, double s) { return {a.x / s, a.y / s}; }
+  constexpr Vec2& operator+=(Vec2 b) {
+    x += b.x;
+    y += b.y;
+    return *this;
+  }
+  constexpr Vec2& operator-=(Vec2 b) {
+    x -= b.x;
+    y -= b.y;
+    return *this;
+  }
+  friend constexpr bool operator==(Vec2, Vec2) = default;
+};
+
+constexpr double dot(Vec2 a, Vec2 b) {
+  return a.x * b.x + a.y * b.y;
+}
+// z-component of the 3D cross product: > 0 when b is counter-clockwise from a.
+constexpr double cross(Vec2 a, Vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+constexpr double norm2(Vec2 a) {
+  return dot(a, a);
+}
+inline double norm(Vec2 a) {
+  return std::hypot(a.x, a.y);
+}
+inline double distance(Vec2 a, Vec2 b) {
+  return norm(a - b);
+}
+constexpr Vec2 perp(Vec2 a) {
+  return {-a.y, a.x};
+}  // rotated +90 degrees
+inline bool is_finite(Vec2 a) {
+  return std::isfinite(a.x) && std::isfinite(a.y);
+}
+
+// Closest point to p on the segment [a, b], and its parameter in [0, 1].
+struct SegmentProjection {
+  Vec2 point;
+  double t;
+};
+inline SegmentProjection project_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double len2 = norm2(d);
+  double t = len2 > 0.0 ? dot(p - a, d) / len2 : 0.0;
+  t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+  return {a + t * d, t};
+}
+
+struct Box {
+  Vec2 lo{INFINITY, INFINITY};
+  Vec2 hi{-INFINITY, -INFINITY};
+  void add(Vec2 p) {
+    lo = {std::fmin(lo.x, p.x), std::fmin(lo.y, p.y)};
+    hi = {std::fmax(hi.x, p.x), std::fmax(hi.y, p.y)};
+  }
+  bool empty() const { return lo.x > hi.x || lo.y > hi.y; }
+  bool overlaps(const Box& o) const {
+    return lo.x <= o.hi.x && o.lo.x <= hi.x && lo.y <= o.hi.y && o.lo.y <= hi.y;
+  }
+  bool contains(const Box& o) const {
+    return lo.x <= o.lo.x && o.hi.x <= hi.x && lo.y <= o.lo.y && o.hi.y <= hi.y;
+  }
+  Vec2 size() const { return hi - lo; }
+};
+
+}  // namespace covsim

@@ -1,0 +1,202 @@
+// Triangular expansion (after Bungiu, Hemmer, Hershberger, Huang and Kröller, 2014): from
+// the triangle holding the viewpoint, look through each edge into the next triangle with a
+// narrowing window of directions; a boundary edge met inside a window is visible there.
+#include "core/geometry/visibility.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace covsim {
+
+namespace {
+
+// Where the ray p + s * dir meets the line through a and b.
+Vec2 ray_line(Vec2 p, Vec2 dir, Vec2 a, Vec2 b) {
+  const Vec2 s = b - a;
+  const double denom = cross(dir, s);
+  if (denom == 0.0) return norm2(a - p) < norm2(b - p) ? a : b;
+  return p + (cross(a - p, s) / denom) * dir;
+}
+
+// The part of segment [a, b] within distance r of p, if any.
+bool clip_to_disk(Vec2 p, double r, Vec2& a, Vec2& b) {
+  if (std::isinf(r)) return true;
+  const Vec2 d = b - a;
+  const double A = norm2(d), B = 2.0 * dot(a - p, d), C = norm2(a - p) - r * r;
+  if (A == 0.0) return C <= 0.0;
+  const double disc = B * B - 4.0 * A * C;
+  if (disc < 0.0) return false;
+  const double sq = std::sqrt(disc);
+  const double t0 = std::max(0.0, (-B - sq) / (2.0 * A)), t1 = std::min(1.0, (-B + sq) / (2.0 * A));
+  if (t0 > t1) return false;
+  const Vec2 a0 = a;
+  a = a0 + t0 * d;
+  b = a0 + t1 * d;
+  return true;
+}
+
+struct Window {
+  std::uint32_t triangle;
+  int edge;    // the edge of `triangle` being looked at
+  Vec2 right;  // directions from the viewpoint: the window runs counter-clockwise from
+  Vec2 left;   // `right` to `left` and spans less than 180 degrees
+};
+
+struct Sorted {
+  double angle;
+  VisiblePiece piece;
+};
+
+class Expansion {
+ public:
+  Expansion(const Environment& env, Vec2 p, double range)
+      : mesh_(env.mesh()), p_(p), range_(range), tol_(env.tolerance()) {}
+
+  // Looks from p at edge i of triangle t, from its inner side, through the window.
+  void look(std::uint32_t t, int i, Vec2 right, Vec2 left) {
+    stack_.push_back({t, i % 3, right, left});
+  }
+
+  // A boundary edge through the viewpoint, seen edge-on.
+  void radial(Vec2 a, Vec2 b, std::uint32_t edge) {
+    const Vec2 far = (a == p_) ? b : a;
+    if (clip_to_disk(p_, range_, a, b)) add(a, b, edge, far - p_);
+  }
+
+  void run() {
+    while (!stack_.empty()) {
+      const Window w = stack_.back();
+      stack_.pop_back();
+      if (cross(w.right, w.left) <= 0.0) continue;  // empty window
+      const auto& tri = mesh_.triangles[w.triangle];
+      const Vec2 a = mesh_.corner(w.triangle, w.edge + 1), b = mesh_.corner(w.triangle, w.edge + 2);
+      Vec2 from = ray_line(p_, w.right, a, b), to = ray_line(p_, w.left, a, b);
+      const std::int32_t n = tri.neighbor[static_cast<std::size_t>(w.edge)];
+      if (n == FreeSpaceMesh::kBoundary) {
+        const Vec2 mid = 0.5 * (from + to) - p_;
+        // Boundary edge k starts at mesh vertex k.
+        if (clip_to_disk(p_, range_, from, to))
+          add(from, to, tri.v[static_cast<std::size_t>((w.edge + 1) % 3)], mid);
+        continue;
+      }
+      if (norm2(project_to_segment(p_, from, to).point - p_) > range_ * range_) continue;
+      // Into the neighbour: its vertex c opposite the shared edge splits the window; the
+      // far edges run right -> c and c -> left.
+      const auto next = static_cast<std::uint32_t>(n);
+      const int j = mesh_.edge_towards(next, w.triangle);
+      const Vec2 c = mesh_.corner(next, j) - p_;
+      const Vec2 left_of_right_part = cross(c, w.left) > 0.0 ? c : w.left;  // the more clockwise
+      const Vec2 right_of_left_part =
+          cross(w.right, c) > 0.0 ? c : w.right;  // the more counter-clockwise
+      stack_.push_back({next, (j + 1) % 3, w.right, left_of_right_part});
+      stack_.push_back({next, (j + 2) % 3, right_of_left_part, w.left});
+    }
+  }
+
+  VisibleBoundary result() {
+    std::sort(sorted_.begin(), sorted_.end(),
+              [](const Sorted& x, const Sorted& y) { return x.angle < y.angle; });
+    VisibleBoundary out;
+    for (const Sorted& s : sorted_) {
+      if (!out.pieces.empty()) {
+        VisiblePiece& last = out.pieces.back();
+        if (last.edge == s.piece.edge && norm(last.b - s.piece.a) <= tol_) {
+          last.b = s.piece.b;
+          continue;
+        }
+      }
+      out.pieces.push_back(s.piece);
+    }
+    // Merge across the cut of the angle range too.
+    if (out.pieces.size() > 1) {
+      VisiblePiece& first = out.pieces.front();
+      const VisiblePiece& last = out.pieces.back();
+      if (last.edge == first.edge && norm(last.b - first.a) <= tol_) {
+        first.a = last.a;
+        out.pieces.pop_back();
+      }
+    }
+    const std::size_t n = out.pieces.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const VisiblePiece& cur = out.pieces[k];
+      const VisiblePiece& next = out.pieces[(k + 1) % n];
+      if (norm(cur.b - next.a) > tol_) {
+        out.discontinuities.push_back(cur.b);
+        out.discontinuities.push_back(next.a);
+      }
+    }
+    return out;
+  }
+
+ private:
+  void add(Vec2 a, Vec2 b, std::uint32_t edge, Vec2 direction) {
+    sorted_.push_back({std::atan2(direction.y, direction.x), VisiblePiece{a, b, edge}});
+  }
+
+  const FreeSpaceMesh& mesh_;
+  Vec2 p_;
+  double range_;
+  double tol_;
+  std::vector<Window> stack_;
+  std::vector<Sorted> sorted_;
+};
+
+}  // namespace
+
+VisibleBoundary visible_boundary(const Environment& env, Vec2 p, double range) {
+  const auto located = env.locate(p);
+  if (!located || std::isnan(range) || range < 0.0) return {};
+  const FreeSpaceMesh& mesh = env.mesh();
+  const std::uint32_t t = *located;
+  const double tol = env.tolerance();
+  Expansion ex(env, p, range);
+
+  // Where p sits in its triangle decides which edges it looks at first.
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t v = mesh.triangles[t].v[static_cast<std::size_t>(k)];
+    if (norm(mesh.vertices[v] - p) > tol) continue;
+    // At a vertex: every triangle around it, looking at the edge opposite the vertex.
+    for (std::uint32_t s = mesh.star_start[v]; s < mesh.star_start[v + 1]; ++s) {
+      const std::uint32_t u = mesh.star[s];
+      const auto& tri = mesh.triangles[u];
+      const int at = tri.v[0] == v ? 0 : (tri.v[1] == v ? 1 : 2);
+      ex.look(u, at, mesh.corner(u, at + 1) - p, mesh.corner(u, at + 2) - p);
+      // Boundary edges through the vertex: v -> corner(at+1) is edge at+2; corner(at+2) -> v is
+      // edge at+1.
+      if (tri.neighbor[static_cast<std::size_t>((at + 2) % 3)] == FreeSpaceMesh::kBoundary)
+        ex.radial(p, mesh.corner(u, at + 1), v);
+      if (tri.neighbor[static_cast<std::size_t>((at + 1) % 3)] == FreeSpaceMesh::kBoundary)
+        ex.radial(mesh.corner(u, at + 2), p, tri.v[static_cast<std::size_t>((at + 2) % 3)]);
+    }
+    ex.run();
+    return ex.result();
+  }
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 a = mesh.corner(t, k + 1), b = mesh.corner(t, k + 2);
+    if (std::fabs(cross(b - a, p - a)) > tol * norm(b - a)) continue;
+    // On edge k (between its ends): the other edges of this triangle and, across edge k,
+    // of the neighbour; a boundary edge k is seen edge-on in both directions.
+    auto from_triangle = [&](std::uint32_t u, int edge) {
+      ex.look(u, edge + 1, mesh.corner(u, edge + 2) - p, mesh.corner(u, edge) - p);
+      ex.look(u, edge + 2, mesh.corner(u, edge) - p, mesh.corner(u, edge + 1) - p);
+    };
+    from_triangle(t, k);
+    const std::int32_t n = mesh.triangles[t].neighbor[static_cast<std::size_t>(k)];
+    if (n == FreeSpaceMesh::kBoundary) {
+      const std::uint32_t edge = mesh.triangles[t].v[static_cast<std::size_t>((k + 1) % 3)];
+      ex.radial(p, b, edge);
+      ex.radial(a, p, edge);
+    } else {
+      const auto u = static_cast<std::uint32_t>(n);
+      from_triangle(u, mesh.edge_towards(u, t));
+    }
+    ex.run();
+    return ex.result();
+  }
+  for (int k = 0; k < 3; ++k)
+    ex.look(t, k, mesh.corner(t, k + 1) - p, mesh.corner(t, k + 2) - p);
+  ex.run();
+  return ex.result();
+}
+
+}  // namespace covsim
