@@ -5,6 +5,7 @@
 
 namespace covsim::app {
 
+void add_cells_command(CLI::App& app);
 void add_kernel_demo_command(CLI::App& app);
 
 }  // namespace covsim::app

@@ -4,16 +4,21 @@
 
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "scenarios/scenario_error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"covsim: discrete-event simulation of multi-robot Voronoi coverage"};
   app.require_subcommand(1);
+  covsim::app::add_cells_command(app);
   covsim::app::add_kernel_demo_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  } catch (const covsim::ScenarioError& e) {
+    std::cerr << "covsim: " << e.what() << '\n';
+    return 2;
   } catch (const covsim::app::InputError& e) {
     std::cerr << "covsim: " << e.what() << '\n';
     return 2;

@@ -10,10 +10,9 @@
 namespace covsim {
 
 Environment::Environment(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes) {
-  rings_.push_back(normalize_ring(std::move(outer), ring_name(0), true));
-  for (std::size_t h = 0; h < holes.size(); ++h) {
-    rings_.push_back(normalize_ring(std::move(holes[h]), ring_name(h + 1), false));
-  }
+  rings_.push_back(normalize_ring(std::move(outer), 0, true));
+  for (std::size_t h = 0; h < holes.size(); ++h)
+    rings_.push_back(normalize_ring(std::move(holes[h]), h + 1, false));
   check_hole_placement(rings_);
 
   for (Vec2 p : rings_[0])

@@ -43,11 +43,13 @@ std::string ring_name(std::size_t ring) {
   return ring == 0 ? std::string("outer ring") : fmt::format("hole {}", ring - 1);
 }
 
-std::vector<Vec2> normalize_ring(std::vector<Vec2> ring, const std::string& name,
+std::vector<Vec2> normalize_ring(std::vector<Vec2> ring, std::size_t ring_index,
                                  bool counter_clockwise) {
+  const std::string name = ring_name(ring_index);
+  const int at = static_cast<int>(ring_index);
   for (std::size_t i = 0; i < ring.size(); ++i) {
     if (!is_finite(ring[i]))
-      throw GeometryError(fmt::format("{}: vertex {} has a non-finite coordinate", name, i));
+      throw GeometryError(fmt::format("{}: vertex {} has a non-finite coordinate", name, i), at);
   }
   std::vector<Vec2> r;
   for (Vec2 p : ring) {
@@ -57,13 +59,13 @@ std::vector<Vec2> normalize_ring(std::vector<Vec2> ring, const std::string& name
     r.pop_back();
   if (r.size() < 3) {
     throw GeometryError(
-        fmt::format("{}: needs at least 3 distinct vertices, has {}", name, r.size()));
+        fmt::format("{}: needs at least 3 distinct vertices, has {}", name, r.size()), at);
   }
   bool collinear = true;
   for (std::size_t i = 2; i < r.size() && collinear; ++i)
     collinear = orientation(r[0], r[1], r[i]) == 0;
   if (collinear)
-    throw GeometryError(fmt::format("{}: has zero area (all vertices on one line)", name));
+    throw GeometryError(fmt::format("{}: has zero area (all vertices on one line)", name), at);
 
   const std::size_t n = r.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -72,16 +74,18 @@ std::vector<Vec2> normalize_ring(std::vector<Vec2> ring, const std::string& name
     const Vec2 c = r[(i + 2) % n];
     if (orientation(a, b, c) == 0 && dot(a - b, c - b) > 0.0) {
       throw GeometryError(fmt::format("{}: edges {} and {} fold back onto each other at vertex {}",
-                                      name, i, (i + 1) % n, (i + 1) % n));
+                                      name, i, (i + 1) % n, (i + 1) % n),
+                          at);
     }
     const Box bi = box_of(a, b);
     for (std::size_t j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;  // adjacent through the closing vertex
       const Vec2 p = r[j], q = r[(j + 1) % n];
       if (bi.overlaps(box_of(p, q)) && segments_intersect(a, b, p, q)) {
-        throw GeometryError(fmt::format(
-            "{}: is self-intersecting: edge {} (vertex {} to {}) meets edge {} (vertex {} to {})",
-            name, i, i, (i + 1) % n, j, j, (j + 1) % n));
+        throw GeometryError(fmt::format("{}: is self-intersecting: edge {} (vertex {} to {}) meets "
+                                        "edge {} (vertex {} to {})",
+                                        name, i, i, (i + 1) % n, j, j, (j + 1) % n),
+                            at);
       }
     }
   }
@@ -109,25 +113,30 @@ void check_hole_placement(const std::vector<std::vector<Vec2>>& rings) {
       throw GeometryError(
           fmt::format("{}: is not strictly inside the outer ring: its edge {} touches or crosses "
                       "edge {} of the outer ring",
-                      ring_name(h), meet->first, meet->second));
+                      ring_name(h), meet->first, meet->second),
+          static_cast<int>(h));
     }
     if (!inside_ring(rings[0], rings[h][0])) {
       throw GeometryError(
           fmt::format("{}: is not inside the outer ring (vertex 0 at ({}, {}) is outside)",
-                      ring_name(h), rings[h][0].x, rings[h][0].y));
+                      ring_name(h), rings[h][0].x, rings[h][0].y),
+          static_cast<int>(h));
     }
   }
   for (std::size_t a = 1; a < rings.size(); ++a) {
     for (std::size_t b = a + 1; b < rings.size(); ++b) {
       if (!boxes[a].overlaps(boxes[b])) continue;
       if (auto meet = rings_meet(rings[a], rings[b])) {
-        throw GeometryError(fmt::format(
-            "{} and {} overlap or touch: edge {} of the first meets edge {} of the second",
-            ring_name(a), ring_name(b), meet->first, meet->second));
+        throw GeometryError(
+            fmt::format(
+                "{} and {} overlap or touch: edge {} of the first meets edge {} of the second",
+                ring_name(a), ring_name(b), meet->first, meet->second),
+            static_cast<int>(b));
       }
       if (inside_ring(rings[a], rings[b][0]) || inside_ring(rings[b], rings[a][0])) {
-        throw GeometryError(fmt::format("{} and {} overlap: one lies inside the other",
-                                        ring_name(a), ring_name(b)));
+        throw GeometryError(
+            fmt::format("{} and {} overlap: one lies inside the other", ring_name(a), ring_name(b)),
+            static_cast<int>(b));
       }
     }
   }

@@ -10,7 +10,7 @@ namespace covsim {
 
 // Drops a repeated closing vertex and repeated consecutive vertices, checks coordinates,
 // vertex count, area and simplicity, and orients the ring counter-clockwise (or clockwise).
-std::vector<Vec2> normalize_ring(std::vector<Vec2> ring, const std::string& name,
+std::vector<Vec2> normalize_ring(std::vector<Vec2> ring, std::size_t ring_index,
                                  bool counter_clockwise);
 // Checks every hole lies strictly inside the outer ring and no two holes overlap or touch.
 void check_hole_placement(const std::vector<std::vector<Vec2>>& rings);

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "core/geometry/quadrature.hpp"
 #include "core/geometry/voronoi_partition.hpp"
 
@@ -27,7 +29,8 @@ double g1(double a, double b, double mu, double s) {
 }
 
 fs::path temp_file(const std::string& name, const std::string& text, bool binary = false) {
-  const fs::path p = fs::temp_directory_path() / ("covsim-density-" + name);
+  const fs::path p =
+      fs::temp_directory_path() / ("covsim-density-" + std::to_string(::getpid()) + "-" + name);
   std::ofstream(p, binary ? std::ios::binary : std::ios::out) << text;
   return p;
 }

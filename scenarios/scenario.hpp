@@ -1,0 +1,35 @@
+#pragma once
+// A scenario as read from its JSON file and validated: the environment Ω, the density φ,
+// the robots' start positions and the seed. See docs/scenario-format.md for every key.
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/geometry/density.hpp"
+#include "core/geometry/environment.hpp"
+
+namespace covsim {
+
+struct Scenario {
+  std::string source;   // the file it came from, for messages
+  nlohmann::json json;  // as read, so that a trace can embed it
+  std::shared_ptr<const Environment> environment;
+  std::shared_ptr<const Density> density;
+  std::vector<Vec2> robot_positions;  // empty when the file has no "robots"
+  std::optional<std::uint64_t> seed;
+};
+
+// Throws ScenarioError naming the file, the JSON path and what was expected: malformed
+// JSON, unknown keys, wrong types, invalid polygons, a robot outside Ω or two robots at the
+// same place, a density with no mass on Ω.
+Scenario load_scenario(const std::filesystem::path& file);
+// The same from JSON already parsed; files it names (rasters) are relative to base_dir.
+Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
+                        const std::filesystem::path& base_dir);
+
+}  // namespace covsim

@@ -1,0 +1,140 @@
+#include <fmt/format.h>
+
+#include "core/geometry/cell_integrator.hpp"
+#include "core/geometry/geometry_error.hpp"
+#include "core/geometry/ring_validation.hpp"
+#include "scenarios/json_reader.hpp"
+#include "scenarios/scenario.hpp"
+
+namespace covsim {
+
+namespace {
+
+std::shared_ptr<const Environment> read_environment(const JsonValue& v) {
+  v.only_keys({"outer", "holes"});
+  std::vector<Vec2> outer = v.at("outer").points();
+  std::vector<std::vector<Vec2>> holes;
+  if (auto h = v.find("holes")) {
+    for (std::size_t i = 0; i < h->size(); ++i)
+      holes.push_back((*h)[i].points());
+  }
+  try {
+    return std::make_shared<const Environment>(std::move(outer), std::move(holes));
+  } catch (const GeometryError& e) {
+    const std::string at = e.ring() < 0    ? v.path()
+                           : e.ring() == 0 ? v.path() + ".outer"
+                                           : fmt::format("{}.holes[{}]", v.path(), e.ring() - 1);
+    throw ScenarioError(fmt::format("{}: {}: {}", v.file(), at, e.what()));
+  }
+}
+
+Density read_raster(const JsonValue& v, const std::filesystem::path& base_dir,
+                    const Environment& env) {
+  v.only_keys({"type", "file", "extent", "interpolation", "scale"});
+  const JsonValue file = v.at("file");
+  const std::filesystem::path path = base_dir / file.string();
+  const JsonValue extent = v.at("extent");
+  if (extent.size() != 2) extent.fail("expected [[x_min, y_min], [x_max, y_max]]");
+  const Box box{extent[0].point(), extent[1].point()};
+  if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y))
+    extent.fail("expected [[x_min, y_min], [x_max, y_max]] with min < max");
+  if (!box.contains(env.bounds()))
+    extent.fail("the raster must cover the environment's bounding box");
+  Raster::Interpolation interp = Raster::Interpolation::constant;
+  if (auto i = v.find("interpolation")) {
+    interp = i->one_of({"constant", "bilinear"}) == "bilinear" ? Raster::Interpolation::bilinear
+                                                               : Raster::Interpolation::constant;
+  }
+  const double scale = v.find("scale") ? v.at("scale").positive() : 1.0;
+  std::vector<std::vector<double>> rows;
+  const std::string ext = path.extension().string();
+  try {
+    if (ext == ".csv") {
+      rows = read_raster_csv(path);
+    } else if (ext == ".pgm") {
+      rows = read_raster_pgm(path);
+    } else {
+      file.fail("expected a .csv or .pgm file");
+    }
+    for (auto& row : rows) {
+      for (double& x : row)
+        x *= scale;
+    }
+    return Density::raster(make_raster(rows, box, interp));
+  } catch (const ScenarioError&) {
+    throw;
+  } catch (const std::exception& e) {
+    file.fail(e.what());
+  }
+}
+
+std::shared_ptr<const Density> read_density(const JsonValue& v,
+                                            const std::filesystem::path& base_dir,
+                                            const Environment& env) {
+  const std::string type = v.at("type").one_of({"uniform", "gaussian_mixture", "raster"});
+  std::shared_ptr<const Density> d;
+  if (type == "uniform") {
+    v.only_keys({"type", "value"});
+    d = std::make_shared<const Density>(
+        Density::uniform(v.find("value") ? v.at("value").positive() : 1.0));
+  } else if (type == "gaussian_mixture") {
+    v.only_keys({"type", "components", "floor"});
+    std::vector<GaussianComponent> cs;
+    const JsonValue list = v.at("components");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const JsonValue c = list[i];
+      c.only_keys({"mean", "sigma", "weight"});
+      cs.push_back(GaussianComponent{c.at("mean").point(), c.at("sigma").positive(),
+                                     c.at("weight").non_negative()});
+    }
+    const double floor = v.find("floor") ? v.at("floor").non_negative() : 0.0;
+    d = std::make_shared<const Density>(Density::gaussian_mixture(std::move(cs), floor));
+  } else {
+    d = std::make_shared<const Density>(read_raster(v, base_dir, env));
+  }
+  if (!(CellIntegrator(env, *d).total_mass() > 0.0))
+    v.fail("the density has no mass on the environment");
+  return d;
+}
+
+std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env) {
+  v.only_keys({"positions"});
+  const JsonValue list = v.at("positions");
+  std::vector<Vec2> positions = list.points();
+  if (positions.empty()) list.fail("expected at least one robot");
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const Vec2 p = positions[i];
+    if (!env.contains(p))
+      list[i].fail(
+          fmt::format("robot at ({}, {}) is not in the environment (outside it or "
+                      "inside an obstacle)",
+                      p.x, p.y));
+    for (std::size_t j = 0; j < i; ++j) {
+      if (positions[j] == p)
+        list[i].fail(fmt::format("robots {} and {} start at the same position", j, i));
+    }
+  }
+  return positions;
+}
+
+}  // namespace
+
+Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
+                        const std::filesystem::path& base_dir) {
+  Scenario s;
+  s.source = source;
+  s.json = json;
+  const JsonValue root(s.json, source);
+  root.only_keys({"environment", "density", "robots", "seed"});
+  s.environment = read_environment(root.at("environment"));
+  s.density = read_density(root.at("density"), base_dir, *s.environment);
+  if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment);
+  if (auto seed = root.find("seed")) s.seed = seed->unsigned_integer();
+  return s;
+}
+
+Scenario load_scenario(const std::filesystem::path& file) {
+  return parse_scenario(read_json_file(file), file.string(), file.parent_path());
+}
+
+}  // namespace covsim

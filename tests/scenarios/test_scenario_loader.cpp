@@ -1,0 +1,112 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "scenarios/scenario.hpp"
+#include "scenarios/scenario_error.hpp"
+
+using namespace covsim;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path write(const std::string& name, const std::string& text) {
+  // One folder per process: ctest runs test cases in parallel.
+  const fs::path dir =
+      fs::temp_directory_path() / ("covsim-scenario-tests-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+const std::string kSquare =
+    R"("environment": {"outer": [[0, 0], [4, 0], [4, 4], [0, 4]], "holes": [[[1, 1], [2, 1], [2, 2], [1, 2]]]})";
+
+void expect_error(const std::string& body, const std::string& fragment) {
+  const fs::path f = write("bad.json", body);
+  try {
+    load_scenario(f);
+    FAIL("accepted: " << body);
+  } catch (const ScenarioError& e) {
+    const std::string msg = e.what();
+    CHECK_THAT(msg, Catch::StartsWith(f.string() + ":"));
+    CHECK_THAT(msg, Catch::Contains(fragment));
+  }
+}
+}  // namespace
+
+TEST_CASE("a minimal scenario loads", "[scenario]") {
+  const fs::path f = write(
+      "ok.json",
+      "{" + kSquare +
+          R"(, "density": {"type": "uniform"}, "robots": {"positions": [[0.5, 0.5], [3, 3]]}, "seed": 7})");
+  const Scenario s = load_scenario(f);
+  CHECK(s.environment->area() == Approx(15.0));
+  CHECK(s.robot_positions.size() == 2);
+  CHECK(s.seed == 7u);
+  CHECK(s.density->is_uniform());
+}
+
+TEST_CASE("scenario errors name the file, the JSON path and what was expected", "[scenario]") {
+  const std::string d = R"("density": {"type": "uniform"})";
+  expect_error("{" + kSquare + ", " + d + R"(, "extra": 1})", "$.extra: unknown key \"extra\"");
+  expect_error("{" + d + "}", "$: missing required key \"environment\"");
+  expect_error("{" + kSquare + "}", "$: missing required key \"density\"");
+  expect_error(R"({"environment": {"outer": [[0, 0], [1, 0], [1, "x"]]}, )" + d + "}",
+               "$.environment.outer[2][1]: expected a number, found a string");
+  expect_error(R"({"environment": {"outer": [[0, 0], [1, 0], [1]]}, )" + d + "}",
+               "$.environment.outer[2]: expected a point [x, y]");
+  expect_error(R"({"environment": {"outer": [[0, 0], [2, 2], [2, 0], [0, 2]]}, )" + d + "}",
+               "$.environment.outer: outer ring: is self-intersecting");
+  expect_error(
+      R"({"environment": {"outer": [[0, 0], [4, 0], [4, 4], [0, 4]], "holes": [[[1, 1], [2, 1], [2, 2], [1, 2]], [[3, 3], [5, 3], [5, 5]]]}, )" +
+          d + "}",
+      "$.environment.holes[1]: hole 1: is not strictly inside");
+  expect_error("{" + kSquare + R"(, "density": {"type": "fancy"}})",
+               "$.density.type: expected one of \"uniform\", \"gaussian_mixture\", \"raster\", "
+               "found \"fancy\"");
+  expect_error(
+      "{" + kSquare +
+          R"(, "density": {"type": "gaussian_mixture", "components": [{"mean": [1, 1], "sigma": -1, "weight": 1}]}})",
+      "$.density.components[0].sigma: expected a positive number");
+  expect_error(
+      "{" + kSquare +
+          R"(, "density": {"type": "gaussian_mixture", "components": [{"mean": [1, 1], "sigma": 1, "weight": 1, "colour": 2}]}})",
+      "$.density.components[0].colour: unknown key");
+  expect_error("{" + kSquare + R"(, "density": {"type": "gaussian_mixture", "components": []}})",
+               "$.density: the density has no mass");
+  expect_error("{" + kSquare + ", " + d + R"(, "robots": {"positions": [[0.5, 0.5], [1.5, 1.5]]}})",
+               "$.robots.positions[1]: robot at (1.5, 1.5) is not in the environment");
+  expect_error("{" + kSquare + ", " + d + R"(, "robots": {"positions": [[0.5, 0.5], [0.5, 0.5]]}})",
+               "robots 0 and 1 start at the same position");
+  expect_error("{" + kSquare + ", " + d + R"(, "seed": -3})",
+               "$.seed: expected a non-negative integer");
+  expect_error("{" + kSquare + ", " + d + R"(, "seed": 1.5})",
+               "$.seed: expected a non-negative integer");
+  expect_error("{\n" + kSquare + ",\n" + d + ",,}", "bad.json:3:");
+  expect_error("[1, 2]", "$: expected an object, found an array");
+}
+
+TEST_CASE("raster densities load relative to the scenario file", "[scenario]") {
+  write("ramp.csv", "3,4\n1,2\n");
+  const fs::path f = write(
+      "raster.json",
+      "{" + kSquare +
+          R"(, "density": {"type": "raster", "file": "ramp.csv", "extent": [[0, 0], [4, 4]]}})");
+  const Scenario s = load_scenario(f);
+  CHECK((*s.density)({1, 3.5}) == 3.0);
+  expect_error(
+      "{" + kSquare +
+          R"(, "density": {"type": "raster", "file": "ramp.csv", "extent": [[0, 0], [3, 4]]}})",
+      "$.density.extent: the raster must cover");
+  expect_error(
+      "{" + kSquare +
+          R"(, "density": {"type": "raster", "file": "missing.csv", "extent": [[0, 0], [4, 4]]}})",
+      "$.density.file: ");
+  expect_error(
+      "{" + kSquare +
+          R"(, "density": {"type": "raster", "file": "ramp.txt", "extent": [[0, 0], [4, 4]]}})",
+      "$.density.file: expected a .csv or .pgm file");
+}
