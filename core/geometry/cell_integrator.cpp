@@ -46,18 +46,6 @@ void CellIntegrator::cell(Vec2 g, std::span<const Vec2> neighbors, ConvexPolygon
   }
 }
 
-bool CellIntegrator::inside_free_cells(const Box& b) const {
-  const GridIndex& grid = env_.triangle_index();
-  if (!grid.bounds().contains(b)) return false;
-  const GridIndex::CellRange r = grid.cells(b);
-  for (std::int32_t j = r.j0; j <= r.j1; ++j) {
-    for (std::int32_t i = r.i0; i <= r.i1; ++i) {
-      if (!env_.cell_is_free(i, j)) return false;
-    }
-  }
-  return true;
-}
-
 Moments CellIntegrator::integrate(const ConvexPolygon& cell, Vec2 r) const {
   Moments m;
   for_each_piece(cell, [&](const ConvexPolygon& piece) { m += density_.integrate(piece, r); });

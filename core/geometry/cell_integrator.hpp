@@ -7,6 +7,7 @@
 // triangle it meets, so the integral is a sum over convex pieces, with no polygon Boolean
 // operations. A cell that lies in grid cells known to be free of boundary is integrated
 // whole.
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -49,8 +50,6 @@ class CellIntegrator {
   void for_each_piece(const ConvexPolygon& cell, F&& f) const;
 
  private:
-  bool inside_free_cells(const Box& b) const;
-
   const Environment& env_;
   const Density& density_;
   Box clip_box_;
@@ -63,21 +62,36 @@ void CellIntegrator::for_each_piece(const ConvexPolygon& cell, F&& f) const {
   Box box;
   for (Vec2 p : cell)
     box.add(p);
-  if (inside_free_cells(box)) {
+  if (env_.box_in_free_space(box)) {
     f(cell);
     return;
   }
   const FreeSpaceMesh& mesh = env_.mesh();
   ConvexPolygon a, b;
+  bool done = false;
   env_.triangle_index().query(box, [&](std::uint32_t t) {
+    if (done) return;
+    const Vec2 c0 = mesh.corner(t, 0), c1 = mesh.corner(t, 1), c2 = mesh.corner(t, 2);
+    if (std::max({c0.x, c1.x, c2.x}) < box.lo.x || std::min({c0.x, c1.x, c2.x}) > box.hi.x ||
+        std::max({c0.y, c1.y, c2.y}) < box.lo.y || std::min({c0.y, c1.y, c2.y}) > box.hi.y) {
+      return;
+    }
     a = cell;
+    bool whole = true;  // the cell lies inside this triangle: no other triangle meets it
     for (int i = 0; i < 3 && a.size() >= 3; ++i) {
       const Vec2 p = mesh.corner(t, i + 1), q = mesh.corner(t, i + 2);
       const Vec2 n = -perp(q - p);  // outward normal of the counter-clockwise edge
-      clip(a, HalfPlane{n, dot(n, p)}, b);
+      const HalfPlane h{n, dot(n, p)};
+      bool inside = true;
+      for (Vec2 v : a)
+        inside = inside && h.signed_distance(v) <= 0.0;
+      if (inside) continue;
+      whole = false;
+      clip(a, h, b);
       a.swap(b);
     }
     if (a.size() >= 3) f(a);
+    done = whole;
   });
 }
 

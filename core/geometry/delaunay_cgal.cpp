@@ -49,19 +49,8 @@ DelaunayNeighbors delaunay_neighbors(const std::vector<Vec2>& generators) {
   }
   DelaunayNeighbors out;
   out.start.assign(n + 1, 0);
-  std::vector<std::vector<std::uint32_t>> lists(n);
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
-    auto& list = lists[v->info()];
-    if (dt.dimension() < 2) {
-      // Collinear generators: every pair of consecutive points along the line.
-      continue;
-    }
-    auto c = dt.incident_vertices(v), done = c;
-    do {
-      if (!dt.is_infinite(c)) list.push_back(c->info());
-    } while (++c != done);
-  }
-  if (dt.dimension() < 2 && n > 1) {
+  if (dt.dimension() < 2) {
+    // Collinear generators: neighbours are the adjacent points along the line.
     std::vector<std::uint32_t> order(n);
     for (std::uint32_t i = 0; i < n; ++i)
       order[i] = i;
@@ -69,18 +58,39 @@ DelaunayNeighbors delaunay_neighbors(const std::vector<Vec2>& generators) {
       return std::make_pair(generators[a].x, generators[a].y) <
              std::make_pair(generators[b].x, generators[b].y);
     });
+    std::vector<std::vector<std::uint32_t>> lists(n);
     for (std::size_t k = 1; k < n; ++k) {
       lists[order[k - 1]].push_back(order[k]);
       lists[order[k]].push_back(order[k - 1]);
     }
+    for (std::size_t i = 0; i < n; ++i) {
+      std::sort(lists[i].begin(), lists[i].end());
+      out.start[i + 1] = out.start[i] + static_cast<std::uint32_t>(lists[i].size());
+      out.index.insert(out.index.end(), lists[i].begin(), lists[i].end());
+    }
+    return out;
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    std::sort(lists[i].begin(), lists[i].end());
-    out.start[i + 1] = out.start[i] + static_cast<std::uint32_t>(lists[i].size());
+  // Each finite edge once: degrees, then the lists straight into place, each sorted for a
+  // canonical order.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  edges.reserve(3 * n);
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    const std::uint32_t u = e->first->vertex(Dt::cw(e->second))->info();
+    const std::uint32_t v = e->first->vertex(Dt::ccw(e->second))->info();
+    edges.emplace_back(u, v);
+    ++out.start[u + 1];
+    ++out.start[v + 1];
   }
-  out.index.reserve(out.start[n]);
-  for (const auto& l : lists)
-    out.index.insert(out.index.end(), l.begin(), l.end());
+  for (std::size_t i = 0; i < n; ++i)
+    out.start[i + 1] += out.start[i];
+  out.index.resize(out.start[n]);
+  std::vector<std::uint32_t> fill(out.start.begin(), out.start.end() - 1);
+  for (auto [u, v] : edges) {
+    out.index[fill[u]++] = v;
+    out.index[fill[v]++] = u;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    std::sort(out.index.begin() + out.start[i], out.index.begin() + out.start[i + 1]);
   return out;
 }
 

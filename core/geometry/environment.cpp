@@ -67,25 +67,54 @@ Environment::Environment(std::vector<Vec2> outer, std::vector<std::vector<Vec2>>
   triangle_index_ = GridIndex(tri_boxes, indexed, 1.0);
   edge_index_ = GridIndex(edge_boxes, indexed, 2.0);
 
-  // A cell of the triangle grid is free when no boundary edge comes near it and its centre
-  // is in Ω: then everything in it is in Ω.
-  free_cell_.assign(static_cast<std::size_t>(triangle_index_.nx()) * triangle_index_.ny(), false);
-  for (std::int32_t j = 0; j < triangle_index_.ny(); ++j) {
-    for (std::int32_t i = 0; i < triangle_index_.nx(); ++i) {
-      Box cell = triangle_index_.cell_box(i, j);
-      bool touched = false;
-      edge_index_.query(cell, [&](std::uint32_t e) {
-        Box eb;
-        eb.add(boundary_[e].a);
-        eb.add(boundary_[e].b);
-        touched = touched || eb.overlaps(cell);
-      });
-      if (!touched) {
-        free_cell_[static_cast<std::size_t>(triangle_index_.cell_index(i, j))] =
-            contains(0.5 * (cell.lo + cell.hi));
-      }
+  // The free-space mask: mark cells near each boundary edge (by the edge's box), then test
+  // the centre of every other cell.
+  const Vec2 size = indexed.size();
+  const double side = std::max(size.x, size.y) / 256.0;
+  free_nx_ = std::max(1, static_cast<std::int32_t>(std::ceil(size.x / side)));
+  free_ny_ = std::max(1, static_cast<std::int32_t>(std::ceil(size.y / side)));
+  free_origin_ = indexed.lo;
+  free_cell_size_ = {size.x / free_nx_, size.y / free_ny_};
+  std::vector<std::uint8_t> near_boundary(static_cast<std::size_t>(free_nx_) * free_ny_, 0);
+  const auto col = [&](double x) {
+    return std::clamp(
+        static_cast<std::int32_t>(std::floor((x - free_origin_.x) / free_cell_size_.x)), 0,
+        free_nx_ - 1);
+  };
+  const auto row = [&](double y) {
+    return std::clamp(
+        static_cast<std::int32_t>(std::floor((y - free_origin_.y) / free_cell_size_.y)), 0,
+        free_ny_ - 1);
+  };
+  for (const Box& eb : edge_boxes) {
+    for (std::int32_t j = row(eb.lo.y); j <= row(eb.hi.y); ++j) {
+      for (std::int32_t i = col(eb.lo.x); i <= col(eb.hi.x); ++i)
+        near_boundary[static_cast<std::size_t>(j) * free_nx_ + i] = 1;
     }
   }
+  free_mask_.assign(near_boundary.size(), 0);
+  for (std::int32_t j = 0; j < free_ny_; ++j) {
+    for (std::int32_t i = 0; i < free_nx_; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * free_nx_ + i;
+      if (near_boundary[k]) continue;
+      free_mask_[k] = contains(free_origin_ +
+                               Vec2{(i + 0.5) * free_cell_size_.x, (j + 0.5) * free_cell_size_.y});
+    }
+  }
+}
+
+bool Environment::box_in_free_space(const Box& b) const {
+  const double fi0 = std::floor((b.lo.x - free_origin_.x) / free_cell_size_.x);
+  const double fj0 = std::floor((b.lo.y - free_origin_.y) / free_cell_size_.y);
+  const double fi1 = std::floor((b.hi.x - free_origin_.x) / free_cell_size_.x);
+  const double fj1 = std::floor((b.hi.y - free_origin_.y) / free_cell_size_.y);
+  if (!(fi0 >= 0 && fj0 >= 0 && fi1 < free_nx_ && fj1 < free_ny_)) return false;
+  for (auto j = static_cast<std::int32_t>(fj0); j <= static_cast<std::int32_t>(fj1); ++j) {
+    for (auto i = static_cast<std::int32_t>(fi0); i <= static_cast<std::int32_t>(fi1); ++i) {
+      if (!free_mask_[static_cast<std::size_t>(j) * free_nx_ + i]) return false;
+    }
+  }
+  return true;
 }
 
 std::optional<std::uint32_t> Environment::locate(Vec2 p) const {

@@ -43,10 +43,9 @@ class Environment {
   const std::vector<BoundaryEdge>& boundary() const { return boundary_; }
   const FreeSpaceMesh& mesh() const { return mesh_; }
   const GridIndex& triangle_index() const { return triangle_index_; }
-  // Whether a cell of triangle_index() lies entirely inside Ω (no boundary crosses it).
-  bool cell_is_free(std::int32_t i, std::int32_t j) const {
-    return free_cell_[static_cast<std::size_t>(triangle_index_.cell_index(i, j))];
-  }
+  // Whether the box lies entirely inside Ω: it falls in cells of a fine mask (about 256
+  // cells across Ω) that no boundary edge comes near and whose centres are in Ω.
+  bool box_in_free_space(const Box& b) const;
 
   double area() const { return area_; }
   const Box& bounds() const { return bounds_; }
@@ -82,7 +81,10 @@ class Environment {
   FreeSpaceMesh mesh_;
   GridIndex triangle_index_;
   GridIndex edge_index_;
-  std::vector<bool> free_cell_;
+  // The free-space mask: cells free_origin_ + (i, j) * free_cell_size_.
+  std::vector<std::uint8_t> free_mask_;
+  Vec2 free_origin_, free_cell_size_;
+  std::int32_t free_nx_ = 0, free_ny_ = 0;
   Box bounds_;
   double area_ = 0.0;
   double diameter_ = 0.0;
