@@ -179,6 +179,26 @@ std::optional<std::uint32_t> Environment::nearest_edge(Vec2 p,
   return best;
 }
 
+Vec2 Environment::advance(Vec2 from, Vec2 to) const {
+  if (segment_inside(from, to)) return to;
+  const double d = distance(from, to);
+  const auto hit = ray_cast(from, to - from, d);
+  return hit ? hit->point : from;
+}
+
+std::vector<std::uint32_t> Environment::edges_at(Vec2 p) const {
+  std::vector<std::uint32_t> out;
+  Box b;
+  b.add(p - Vec2{tolerance_, tolerance_});
+  b.add(p + Vec2{tolerance_, tolerance_});
+  edge_index_.query(b, [&](std::uint32_t e) {
+    if (norm(project_to_segment(p, boundary_[e].a, boundary_[e].b).point - p) <= tolerance_)
+      out.push_back(e);
+  });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 Vec2 Environment::closest_point(Vec2 p) const {
   if (contains(p)) return p;
   const auto e = nearest_edge(p, nullptr);

@@ -66,6 +66,11 @@ class Environment {
   // the closest point of that component.
   Vec2 closest_point(Vec2 p) const;
   Vec2 closest_point(Vec2 p, std::uint32_t component) const;
+  // How far a straight motion from `from` (in Ω) toward `to` gets before it would leave Ω:
+  // `to` if the segment lies in Ω, else the point where it first leaves.
+  Vec2 advance(Vec2 from, Vec2 to) const;
+  // Boundary edges within tolerance() of p (two at a vertex of ∂Ω, one on an edge).
+  std::vector<std::uint32_t> edges_at(Vec2 p) const;
   // Where a ray from origin along direction leaves Ω, within range (may be infinite).
   // Grazing a corner or running along a wall does not stop it. nullopt if it does not
   // leave Ω within range; origin must be in Ω.

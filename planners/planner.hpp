@@ -1,0 +1,35 @@
+#pragma once
+// The interface every planner implements: given a goal and, at each loop-2 step, a sensor
+// reading and the longest step the robot may take, propose where to go next.
+#include <string_view>
+
+#include "planners/sensor_reading.hpp"
+
+namespace covsim {
+
+enum class PlanStatus {
+  moving,     // on the way
+  reached,    // at the goal
+  projected,  // the goal is unreachable; settled at the closest reachable boundary point
+  stalled,    // gave up (no progress, or the path budget ran out)
+};
+std::string_view to_string(PlanStatus s);
+inline bool is_settled(PlanStatus s) {
+  return s != PlanStatus::moving;
+}
+
+struct PlanStep {
+  Vec2 next;  // at most max_step from the reading's position
+  PlanStatus status;
+};
+
+class Planner {
+ public:
+  virtual ~Planner() = default;
+  virtual std::string_view name() const = 0;
+  // A new goal; what happens to the motion under way is the planner's documented rule.
+  virtual void set_goal(Vec2 goal) = 0;
+  virtual PlanStep step(const SensorReading& reading, double max_step) = 0;
+};
+
+}  // namespace covsim

@@ -1,0 +1,30 @@
+#pragma once
+// What a robot's sensors give a planner at one instant: the part of ∂Ω visible within the
+// sensing range, and the boundary edges it touches (a contact sensor feels the wall's
+// direction, which is how a robot with range 0 follows a wall).
+#include <vector>
+
+#include "core/geometry/visibility.hpp"
+
+namespace covsim {
+
+struct ContactEdge {
+  std::uint32_t edge;   // boundary edge id
+  std::uint32_t ring;   // which obstacle (0: the outer boundary, h + 1: hole h)
+  std::uint32_t index;  // the edge's place in its ring, in the ring's direction
+  Vec2 a, b;            // free space on the left of a -> b
+};
+
+struct SensorReading {
+  Vec2 position;
+  double range = 0.0;  // may be infinite
+  VisibleBoundary visible;
+  std::vector<ContactEdge> contacts;
+  // Which obstacle each visible piece belongs to (parallel to visible.pieces).
+  std::vector<std::uint32_t> piece_rings;
+};
+
+// A reading taken in the environment at p: what an ideal range and contact sensor report.
+SensorReading sense(const Environment& env, Vec2 p, double range);
+
+}  // namespace covsim
