@@ -135,8 +135,10 @@ PlanStep TangentBug::begin_following(const SensorReading& r, double max_step, co
   }
   const std::uint32_t ring = r.contacts.front().ring;
   if (memory_[ring].complete() && goal_inside(ring)) return go_to_projection(r, max_step, ring);
-  // Follow in the direction that continues toward the point last headed for.
-  const Vec2 ref = unit(heading_ ? *heading_ - x : goal_ - x);
+  // Follow in the direction that continues toward the point last headed for (toward the
+  // goal if that point is where the robot stands).
+  const bool heading_ahead = heading_ && distance(*heading_, x) > p_.tolerance;
+  const Vec2 ref = unit(heading_ahead ? *heading_ - x : goal_ - x);
   int dir = 1;
   double best_score = -kInf;
   for (int d : {1, -1}) {

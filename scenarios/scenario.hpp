@@ -12,6 +12,7 @@
 
 #include "core/geometry/density.hpp"
 #include "core/geometry/environment.hpp"
+#include "robot/coverage_config.hpp"
 
 namespace covsim {
 
@@ -22,6 +23,7 @@ struct Scenario {
   std::shared_ptr<const Density> density;
   std::vector<Vec2> robot_positions;  // empty when the file has no "robots"
   std::optional<std::uint64_t> seed;
+  CoverageConfig coverage;  // the controller's settings, defaults where the file is silent
 };
 
 // Throws ScenarioError naming the file, the JSON path and what was expected: malformed

@@ -97,8 +97,52 @@ std::shared_ptr<const Density> read_density(const JsonValue& v,
   return d;
 }
 
+SimTime read_period(const JsonValue& v) {
+  const double s = v.positive();
+  if (s < 1e-9 || s > 1e6)
+    v.fail(fmt::format("expected a period between 1e-9 and 1e6 s, found {}", s));
+  return SimTime::from_seconds(s);
+}
+
+void read_coverage(const JsonValue& root, CoverageConfig& c) {
+  if (auto r = root.find("robots")) {
+    if (auto v = r->find("max_speed")) c.max_speed = v->positive();
+  }
+  if (auto p = root.find("planner")) {
+    p->only_keys({"type"});
+    c.planner = p->at("type").one_of({"tangent_bug"});
+  }
+  if (auto s = root.find("sensor")) {
+    s->only_keys({"range"});
+    const JsonValue range = s->at("range");
+    c.sensor_range = range.is_null() ? INFINITY : range.non_negative();
+  }
+  if (auto l = root.find("loops")) {
+    l->only_keys({"mode", "loop1_period", "loop2_period"});
+    if (auto m = l->find("mode"))
+      c.mode =
+          m->one_of({"classic", "periodic"}) == "periodic" ? LoopMode::periodic : LoopMode::classic;
+    if (auto p = l->find("loop2_period")) c.loop2_period = read_period(*p);
+    if (auto p = l->find("loop1_period")) {
+      if (c.mode != LoopMode::periodic)
+        p->fail("loop1_period applies to \"mode\": \"periodic\" only");
+      c.loop1_period = read_period(*p);
+    }
+  }
+  if (auto v = root.find("convergence")) {
+    v->only_keys({"position_tolerance", "virtual_tolerance", "max_time"});
+    if (auto t = v->find("position_tolerance")) c.position_tolerance = t->positive();
+    if (auto t = v->find("virtual_tolerance")) c.virtual_tolerance = t->positive();
+    if (auto t = v->find("max_time")) c.max_time = read_period(*t);
+  }
+  if (auto m = root.find("metrics")) {
+    m->only_keys({"period"});
+    c.sample_period = read_period(m->at("period"));
+  }
+}
+
 std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env) {
-  v.only_keys({"positions"});
+  v.only_keys({"positions", "max_speed"});
   const JsonValue list = v.at("positions");
   std::vector<Vec2> positions = list.points();
   if (positions.empty()) list.fail("expected at least one robot");
@@ -125,11 +169,13 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   s.source = source;
   s.json = json;
   const JsonValue root(s.json, source);
-  root.only_keys({"environment", "density", "robots", "seed"});
+  root.only_keys({"environment", "density", "robots", "seed", "planner", "sensor", "loops",
+                  "convergence", "metrics"});
   s.environment = read_environment(root.at("environment"));
   s.density = read_density(root.at("density"), base_dir, *s.environment);
   if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment);
   if (auto seed = root.find("seed")) s.seed = seed->unsigned_integer();
+  read_coverage(root, s.coverage);
   return s;
 }
 

@@ -1,0 +1,35 @@
+#include "analysis/final_json.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "core/fingerprint.hpp"
+
+namespace covsim {
+
+std::string final_json(const CoverageOutcome& o) {
+  nlohmann::ordered_json j;
+  j["converged"] = o.converged;
+  j["sim_time"] = o.sim_time.seconds();
+  j["robots"] = nlohmann::ordered_json::array();
+  for (const RobotOutcome& r : o.robots) {
+    nlohmann::ordered_json robot;
+    robot["position"] = {r.position.x, r.position.y};
+    robot["virtual_generator"] = {r.virtual_generator.x, r.virtual_generator.y};
+    robot["virtual_target"] = {r.virtual_target.x, r.virtual_target.y};
+    robot["real_target"] = {r.real_target.x, r.real_target.y};
+    robot["projected"] = r.projected;
+    robot["status"] = std::string(to_string(r.status));
+    robot["path_length"] = r.path_length;
+    j["robots"].push_back(std::move(robot));
+  }
+  j["cost"] = {{"virtual", o.cost_virtual},
+               {"real", o.cost_real},
+               {"real_in_virtual_partition", o.cost_real_in_virtual_partition}};
+  j["fingerprint"] = Fingerprint::to_hex(o.fingerprint);
+  j["stop_reason"] = o.stop_reason;
+  j["events"] = o.events;
+  j["seed"] = o.seed;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace covsim

@@ -1,0 +1,68 @@
+#include "analysis/run_recorder.hpp"
+
+#include <fmt/format.h>
+
+namespace covsim {
+
+RunRecorder::RunRecorder(const std::filesystem::path& dir, const std::vector<Vec2>& starts)
+    : trajectory_(dir / "trajectory.csv"), metrics_(dir / "metrics.csv") {
+  trajectory_buffer_ = "t,robot,x,y,vx,vy\n";
+  metrics_buffer_ =
+      "t,cost_real,cost_virtual,cost_real_in_virtual_partition,settled,projected,path_length\n";
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    fmt::format_to(std::back_inserter(trajectory_buffer_), "0,{},{},{},{},{}\n", i, starts[i].x,
+                   starts[i].y, starts[i].x, starts[i].y);
+    real_.push_back({starts[i]});
+    virtual_.push_back({starts[i]});
+  }
+}
+
+void RunRecorder::on_motion(SimTime t, const Robot& r) {
+  fmt::format_to(std::back_inserter(trajectory_buffer_), "{},{},{},{},{},{}\n", t.seconds(), r.id,
+                 r.position.x, r.position.y, r.virtual_generator.x, r.virtual_generator.y);
+  if (!(real_[r.id].back() == r.position)) real_[r.id].push_back(r.position);
+  if (!(virtual_[r.id].back() == r.virtual_generator))
+    virtual_[r.id].push_back(r.virtual_generator);
+  flush(false);
+}
+
+void RunRecorder::on_sample(SimTime t, CoverageController& controller) {
+  MetricsSample s{t.seconds(), 0, 0, 0, 0, 0, 0};
+  const VoronoiPartition& vp = controller.virtual_partition();
+  s.cost_virtual = vp.cost();
+  s.cost_real_in_virtual_partition = vp.cost(controller.positions());
+  s.cost_real = controller.real_partition().cost();
+  for (const Robot& r : controller.robots()) {
+    s.settled += is_settled(r.status) ? 1 : 0;
+    s.projected += r.projected ? 1 : 0;
+    s.path_length += r.path_length;
+  }
+  fmt::format_to(std::back_inserter(metrics_buffer_), "{},{},{},{},{},{},{}\n", s.t, s.cost_real,
+                 s.cost_virtual, s.cost_real_in_virtual_partition, s.settled, s.projected,
+                 s.path_length);
+  samples_.push_back(s);
+  flush(false);
+}
+
+void RunRecorder::on_finish(SimTime t, CoverageController& c) {
+  if (samples_.empty() || samples_.back().t < t.seconds()) on_sample(t, c);
+}
+
+void RunRecorder::flush(bool force) {
+  if (force || trajectory_buffer_.size() > (1 << 16)) {
+    trajectory_.stream() << trajectory_buffer_;
+    trajectory_buffer_.clear();
+  }
+  if (force || metrics_buffer_.size() > (1 << 16)) {
+    metrics_.stream() << metrics_buffer_;
+    metrics_buffer_.clear();
+  }
+}
+
+void RunRecorder::commit() {
+  flush(true);
+  trajectory_.commit();
+  metrics_.commit();
+}
+
+}  // namespace covsim

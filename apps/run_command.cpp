@@ -1,0 +1,99 @@
+// `covsim run SCENARIO --out DIR`: runs the paper's controller and writes final.json,
+// trajectory.csv, metrics.csv, scene.svg and cost.svg into DIR, all of them only if the
+// run succeeds.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "analysis/coverage_run.hpp"
+#include "analysis/figures.hpp"
+#include "analysis/final_json.hpp"
+#include "analysis/run_recorder.hpp"
+#include "apps/commands.hpp"
+#include "apps/input_error.hpp"
+#include "core/atomic_file.hpp"
+#include "core/fingerprint.hpp"
+#include "core/hash.hpp"
+#include "core/trace.hpp"
+
+namespace covsim::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+// Removes a directory this command created, if a failure left it empty.
+struct CreatedDirectory {
+  fs::path dir;
+  bool created = false;
+  bool keep = false;
+  ~CreatedDirectory() {
+    std::error_code ec;
+    if (created && !keep && fs::is_empty(dir, ec)) fs::remove(dir, ec);
+  }
+};
+}  // namespace
+
+void add_run_command(CLI::App& app) {
+  struct Options {
+    std::string scenario;
+    std::string out;
+    std::string trace;
+  };
+  auto opts = std::make_shared<Options>();
+  CLI::App* cmd =
+      app.add_subcommand("run", "Run the coverage controller on a scenario and write its outputs");
+  cmd->add_option("SCENARIO", opts->scenario, "Scenario file")->required();
+  cmd->add_option("--out", opts->out, "Output directory (created if missing)")->required();
+  cmd->add_option("--trace", opts->trace, "Also write the event trace to this file");
+  cmd->callback([opts] {
+    const Scenario scenario = load_scenario(opts->scenario);
+    const fs::path dir = opts->out;
+    CreatedDirectory guard{dir};
+    std::error_code ec;
+    if (!fs::exists(dir)) {
+      guard.created = fs::create_directories(dir, ec);
+      if (ec)
+        throw InputError(
+            fmt::format("{}: cannot create directory: {}", dir.string(), ec.message()));
+    } else if (!fs::is_directory(dir)) {
+      throw InputError(dir.string() + ": exists and is not a directory");
+    }
+    std::unique_ptr<TraceWriter> trace;
+    if (!opts->trace.empty()) {
+      TraceHeader header;
+      header.seed = scenario.seed.value_or(0);
+      header.scenario_hash = fnv1a64(scenario.json.dump());
+      trace = std::make_unique<TraceWriter>(opts->trace, header);
+    }
+    RunRecorder recorder(dir, scenario.robot_positions);
+    const CoverageOutcome outcome = run_coverage(scenario, &recorder, trace.get());
+
+    AtomicFile final_file(dir / "final.json"), scene(dir / "scene.svg"), cost(dir / "cost.svg");
+    final_file.stream() << final_json(outcome);
+    scene.stream() << scene_svg(scenario, outcome, recorder.real_paths(), recorder.virtual_paths());
+    cost.stream() << cost_svg(recorder.samples());
+    recorder.commit();
+    final_file.commit();
+    scene.commit();
+    cost.commit();
+    if (trace) trace->commit();
+    guard.keep = true;
+
+    std::size_t projected = 0;
+    for (const RobotOutcome& r : outcome.robots)
+      projected += r.projected ? 1 : 0;
+    fmt::print("{} after {:.2f} s simulated ({} events): {} robots, {} projected\n",
+               outcome.converged ? "converged" : "not converged (max_time reached)",
+               outcome.sim_time.seconds(), outcome.events, outcome.robots.size(), projected);
+    fmt::print("cost: virtual {:.6g}, real {:.6g}, real in virtual partition {:.6g}\n",
+               outcome.cost_virtual, outcome.cost_real, outcome.cost_real_in_virtual_partition);
+    fmt::print("fingerprint {}\n", Fingerprint::to_hex(outcome.fingerprint));
+    fmt::print(
+        "wrote {0}/final.json, {0}/trajectory.csv, {0}/metrics.csv, {0}/scene.svg, {0}/cost.svg\n",
+        dir.string());
+  });
+}
+
+}  // namespace covsim::app

@@ -1,0 +1,26 @@
+#include "planners/planner_factory.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "planners/tangent_bug.hpp"
+
+namespace covsim {
+
+const std::vector<std::string_view>& planner_names() {
+  static const std::vector<std::string_view> names{"tangent_bug"};
+  return names;
+}
+
+std::unique_ptr<Planner> make_planner(std::string_view name, const Environment& env) {
+  if (name == "tangent_bug") {
+    double boundary = 0.0;
+    for (const BoundaryEdge& e : env.boundary())
+      boundary += distance(e.a, e.b);
+    return std::make_unique<TangentBug>(
+        TangentBugParams::for_environment(env.diameter(), boundary));
+  }
+  throw std::invalid_argument("unknown planner \"" + std::string(name) + "\"");
+}
+
+}  // namespace covsim

@@ -1,0 +1,16 @@
+#pragma once
+// Planners by name, with parameters scaled to the environment they will run in.
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "planners/planner.hpp"
+
+namespace covsim {
+
+// The names make_planner accepts.
+const std::vector<std::string_view>& planner_names();
+// Throws std::invalid_argument for an unknown name.
+std::unique_ptr<Planner> make_planner(std::string_view name, const Environment& env);
+
+}  // namespace covsim

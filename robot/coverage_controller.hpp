@@ -1,0 +1,79 @@
+#pragma once
+// The paper's non-convex coverage controller (Breitenmoser et al. 2010, Algorithms 1 and 2)
+// on the event kernel.
+//
+// Loop 1 (event "loop1", class 0), for robot i: the Voronoi cell of its virtual generator
+// among the virtual generators, the centroid of the cell ∩ Ω becomes the virtual target; if
+// that lies outside Ω (an obstacle boundary Voronoi region) the real target is its
+// projection, the closest point of Ω, else the virtual target itself. The planner is given
+// the virtual target: TangentBug reaches it, or finds it unreachable after one loop round
+// the obstacle and settles at the projection.
+// Loop 2 (event "loop2", class 1, every loop2_period): a planner step toward the real
+// target, and a straight step of the virtual generator toward the virtual target as if
+// there were no obstacles; both at most max_speed * loop2_period.
+// In classic mode a robot that has settled runs loop 1 again at the next tick; in periodic
+// mode loop 1 runs every loop1_period. Each tick ends with a check (class 3) that folds all
+// positions into the fingerprint and stops the run when every robot is stable.
+// A motion that would leave Ω is an internal error: it throws.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/geometry/voronoi_partition.hpp"
+#include "core/kernel.hpp"
+#include "robot/coverage_config.hpp"
+#include "robot/robot.hpp"
+
+namespace covsim {
+
+class CoverageController;
+
+// Hooks for recording a run.
+class CoverageObserver {
+ public:
+  virtual ~CoverageObserver() = default;
+  virtual void on_motion(SimTime, const Robot&) {}         // after each loop-2 step
+  virtual void on_sample(SimTime, CoverageController&) {}  // every sample_period
+  virtual void on_finish(SimTime, CoverageController&) {}  // once, when the run ends
+};
+
+class CoverageController {
+ public:
+  CoverageController(Kernel& kernel, const Environment& env, const Density& density,
+                     const std::vector<Vec2>& starts, CoverageConfig config);
+
+  void set_observer(CoverageObserver* o) { observer_ = o; }
+  // Schedules loop 1 and loop 2 for every robot, the samples and the checks.
+  void start();
+  bool converged() const { return converged_; }
+
+  const std::vector<Robot>& robots() const { return robots_; }
+  const CellIntegrator& integrator() const { return integrator_; }
+  const CoverageConfig& config() const { return config_; }
+  double position_tolerance() const { return position_tol_; }
+  double virtual_tolerance() const { return virtual_tol_; }
+  std::vector<Vec2> positions() const;
+  std::vector<Vec2> virtual_generators() const;
+  // The partition of the virtual generators as they are now (cached until one moves).
+  const VoronoiPartition& virtual_partition();
+  // The partition of the real positions (robots at the same place share one cell).
+  VoronoiPartition real_partition() const;
+
+ private:
+  void loop1(std::uint32_t i);
+  void loop2(Kernel& k, std::uint32_t i);
+  void check(Kernel& k);
+
+  Kernel& kernel_;
+  const Environment& env_;
+  CellIntegrator integrator_;
+  CoverageConfig config_;
+  double position_tol_, virtual_tol_, step_;
+  std::vector<Robot> robots_;
+  CoverageObserver* observer_ = nullptr;
+  std::unique_ptr<VoronoiPartition> virtual_partition_;
+  EventKind loop1_kind_ = 0, loop2_kind_ = 0, sample_kind_ = 0, check_kind_ = 0;
+  bool converged_ = false;
+};
+
+}  // namespace covsim

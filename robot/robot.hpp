@@ -1,0 +1,25 @@
+#pragma once
+// One robot of the paper's scheme: its real generator (its position), its virtual generator
+// (where it would be if there were no obstacles), and the two targets.
+#include <cstdint>
+#include <memory>
+
+#include "planners/planner.hpp"
+
+namespace covsim {
+
+struct Robot {
+  std::uint32_t id = 0;
+  Vec2 position;           // g_real
+  Vec2 virtual_generator;  // g_virt
+  Vec2 virtual_target;     // t_virt: the centroid of its cell at the last loop-1 update
+  Vec2 real_target;        // t_real: t_virt, or its projection onto Ω
+  bool projected = false;  // t_virt lies outside Ω (an obstacle boundary Voronoi region)
+  bool stable = false;     // the last loop 1 left it where it was: nothing to do
+  Vec2 goal;               // the goal the planner is working on
+  PlanStatus status = PlanStatus::reached;
+  double path_length = 0.0;
+  std::unique_ptr<Planner> planner;
+};
+
+}  // namespace covsim
