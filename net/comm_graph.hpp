@@ -1,0 +1,26 @@
+#pragma once
+// Measures of the communication graph: robots are nodes, an edge joins two robots whose
+// link is up (in range and, if required, in line of sight).
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace covsim {
+
+struct CommGraphMetrics {
+  std::size_t components = 0;
+  std::size_t largest_component = 0;
+  // The largest hop distance between two robots that can reach each other (0 for a graph
+  // without edges); a disconnected graph has no finite diameter, so this is the largest
+  // over its components.
+  std::size_t diameter = 0;
+  double average_degree = 0.0;
+  // The second-smallest eigenvalue of the graph Laplacian: 0 exactly when disconnected.
+  double algebraic_connectivity = 0.0;
+};
+
+// n nodes; edges as pairs of node indices (each once).
+CommGraphMetrics comm_graph_metrics(
+    std::size_t n, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges);
+
+}  // namespace covsim

@@ -1,0 +1,29 @@
+#pragma once
+// What a robot last heard from each other robot. Messages may arrive out of order: an
+// entry is replaced only by a newer sequence number. Entries whose information is older
+// than the staleness limit (by send time) are dropped.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "net/message.hpp"
+
+namespace covsim {
+
+class NeighborTable {
+ public:
+  // Returns false (and keeps the entry) when the message is not newer than what is held.
+  bool update(const StateMessage& m);
+  // Drops entries sent before now - staleness.
+  void drop_stale(SimTime now, SimTime staleness);
+  const std::map<std::uint32_t, StateMessage>& entries() const { return entries_; }
+  std::size_t size() const { return entries_.size(); }
+  // The age of each entry's information at `now`, in seconds.
+  std::vector<double> ages(SimTime now) const;
+
+ private:
+  std::map<std::uint32_t, StateMessage> entries_;  // by sender, so iteration order is fixed
+};
+
+}  // namespace covsim

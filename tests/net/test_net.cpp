@@ -1,0 +1,144 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "net/channel.hpp"
+#include "net/comm_graph.hpp"
+#include "net/neighbor_table.hpp"
+
+using namespace covsim;
+
+namespace {
+const Environment& room() {
+  static const Environment env({{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                               {{{4, 2}, {6, 2}, {6, 8}, {4, 8}}});
+  return env;
+}
+
+double loss_rate(Channel& c, int n, Vec2 a = {1, 1}, Vec2 b = {2, 1}) {
+  int lost = 0;
+  for (int i = 0; i < n; ++i)
+    lost += c.transmit(0, 1, a, b).outcome == Channel::Outcome::lost;
+  return static_cast<double>(lost) / n;
+}
+}  // namespace
+
+TEST_CASE("Bernoulli loss matches p over many messages", "[net]") {
+  for (double p : {0.0, 0.1, 0.3, 0.9}) {
+    Channel c(ChannelConfig{std::nullopt, false, BernoulliLoss{p}, ConstantDelay{0.0}}, 7, room());
+    const int n = 100000;
+    CHECK(std::abs(loss_rate(c, n) - p) <= 5 * std::sqrt(p * (1 - p) / n) + 1e-12);
+  }
+}
+
+TEST_CASE("Gilbert-Elliott loss matches its stationary value", "[net]") {
+  const GilbertElliottLoss ge{0.05, 0.2, 0.01, 0.6};
+  CHECK(ge.stationary_loss() == Approx(0.8 * 0.01 + 0.2 * 0.6));
+  Channel c(ChannelConfig{std::nullopt, false, ge, ConstantDelay{0.0}}, 3, room());
+  // Losses come in bursts, so the bound is wider than for independent draws: the chain
+  // mixes in about 1 / (0.05 + 0.2) = 4 steps.
+  const int n = 400000;
+  CHECK(std::abs(loss_rate(c, n) - ge.stationary_loss()) <= 5 * std::sqrt(0.25 * 10.0 / n));
+}
+
+TEST_CASE("distance loss follows its formula", "[net]") {
+  const DistanceLoss d{0.1, 5.0, 2.0};
+  CHECK(d.at(0.0) == Approx(0.1));
+  CHECK(d.at(2.5) == Approx(0.1 + 0.9 * 0.25));
+  CHECK(d.at(7.0) == 1.0);
+  Channel c(ChannelConfig{std::nullopt, false, d, ConstantDelay{0.0}}, 5, room());
+  const int n = 50000;
+  const double p = d.at(3.0);
+  CHECK(std::abs(loss_rate(c, n, {0.5, 9}, {3.5, 9}) - p) <= 5 * std::sqrt(p * (1 - p) / n));
+}
+
+TEST_CASE("no message arrives before its minimum delay", "[net]") {
+  const DelayModel models[] = {ConstantDelay{0.02}, UniformDelay{0.01, 0.05},
+                               ExponentialDelay{0.03, 0.1}, LogNormalDelay{0.005, -4.0, 0.5}};
+  for (const DelayModel& m : models) {
+    Channel c(ChannelConfig{std::nullopt, false, NoLoss{}, m}, 9, room());
+    double least = INFINITY, sum = 0;
+    for (int i = 0; i < 20000; ++i) {
+      const auto t = c.transmit(2, 3, {1, 1}, {2, 2});
+      REQUIRE(t.outcome == Channel::Outcome::delivered);
+      least = std::min(least, t.delay.seconds());
+      sum += t.delay.seconds();
+    }
+    CHECK(least >= minimum_delay(m) - 1e-9);
+  }
+  // Means, where they are simple: uniform (0.03) and exponential (0.03 + 0.1).
+  Channel u(ChannelConfig{std::nullopt, false, NoLoss{}, UniformDelay{0.01, 0.05}}, 1, room());
+  double sum = 0;
+  for (int i = 0; i < 20000; ++i)
+    sum += u.transmit(0, 1, {1, 1}, {2, 2}).delay.seconds();
+  CHECK(sum / 20000 == Approx(0.03).epsilon(0.01));
+}
+
+TEST_CASE("each link draws from its own streams", "[net]") {
+  auto outcomes = [](bool extra_traffic) {
+    Channel c(ChannelConfig{std::nullopt, false, BernoulliLoss{0.5}, UniformDelay{0, 1}}, 11,
+              room());
+    std::vector<double> seen;
+    for (int i = 0; i < 200; ++i) {
+      if (extra_traffic) c.transmit(0, 1, {1, 1}, {2, 1});  // more messages on another link
+      const auto t = c.transmit(2, 1, {1, 1}, {2, 1});
+      seen.push_back(t.outcome == Channel::Outcome::lost ? -1.0 : t.delay.seconds());
+    }
+    return seen;
+  };
+  CHECK(outcomes(false) == outcomes(true));
+}
+
+TEST_CASE("range and line of sight", "[net]") {
+  Channel c(ChannelConfig{3.0, true, NoLoss{}, ConstantDelay{0.0}}, 1, room());
+  CHECK(c.transmit(0, 1, {1, 1}, {3, 1}).outcome == Channel::Outcome::delivered);
+  CHECK(c.transmit(0, 1, {1, 1}, {5, 1}).outcome == Channel::Outcome::out_of_range);
+  CHECK(c.transmit(0, 1, {3.5, 5}, {6.5, 5}).outcome ==
+        Channel::Outcome::blocked);  // through the wall
+  CHECK(c.in_reach({3.5, 1}, {6.5, 1}));
+  CHECK_FALSE(c.in_reach({3.5, 5}, {6.5, 5}));
+  CHECK(ChannelConfig{}.is_ideal());
+  CHECK_FALSE(
+      (ChannelConfig{std::nullopt, false, BernoulliLoss{0.0}, ConstantDelay{0.0}}.is_ideal()));
+}
+
+TEST_CASE("neighbour tables keep the newest and drop the stale", "[net]") {
+  NeighborTable t;
+  auto msg = [](std::uint32_t from, std::uint64_t seq, double sent) {
+    return StateMessage{
+        from, seq, SimTime::from_seconds(sent), {static_cast<double>(seq), 0}, {0, 0}};
+  };
+  CHECK(t.update(msg(1, 5, 1.0)));
+  CHECK_FALSE(t.update(msg(1, 3, 0.5)));  // older, arriving late
+  CHECK(t.entries().at(1).seq == 5);
+  CHECK(t.update(msg(1, 6, 1.1)));
+  CHECK(t.update(msg(2, 1, 0.2)));
+  const std::vector<double> ages = t.ages(SimTime::from_seconds(1.5));
+  REQUIRE(ages.size() == 2);
+  CHECK(ages[0] == Approx(0.4));  // sender 1, sent at 1.1
+  CHECK(ages[1] == Approx(1.3));  // sender 2, sent at 0.2
+  t.drop_stale(SimTime::from_seconds(1.5), SimTime::from_seconds(1.0));
+  CHECK(t.size() == 1);
+  CHECK(t.entries().count(1) == 1);
+}
+
+TEST_CASE("communication graph measures on known graphs", "[net]") {
+  // A path of 4 nodes: λ2 = 2 - √2.
+  const CommGraphMetrics path = comm_graph_metrics(4, {{0, 1}, {1, 2}, {2, 3}});
+  CHECK(path.components == 1);
+  CHECK(path.largest_component == 4);
+  CHECK(path.diameter == 3);
+  CHECK(path.average_degree == Approx(1.5));
+  CHECK(path.algebraic_connectivity == Approx(2 - std::sqrt(2.0)));
+  // The complete graph K4: λ2 = 4.
+  const CommGraphMetrics k4 =
+      comm_graph_metrics(4, {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}});
+  CHECK(k4.diameter == 1);
+  CHECK(k4.algebraic_connectivity == Approx(4.0));
+  // Two separate edges and an isolated node.
+  const CommGraphMetrics split = comm_graph_metrics(5, {{0, 1}, {2, 3}});
+  CHECK(split.components == 3);
+  CHECK(split.largest_component == 2);
+  CHECK(split.diameter == 1);
+  CHECK(split.algebraic_connectivity == 0.0);
+}
