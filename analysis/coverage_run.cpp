@@ -39,6 +39,8 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
   const std::vector<Vec2> real = controller.positions();
   out.cost_real_in_virtual_partition = virtual_partition.cost(real);
   out.cost_real = controller.real_partition().cost();
+  out.decentralized = controller.decentralized();
+  out.network = controller.network_totals();
   out.fingerprint = kernel.fingerprint().value();
   return out;
 }

@@ -31,6 +31,8 @@ struct CoverageOutcome {
   // Remark 1: H of the virtual generators on their partition, of the real positions on
   // theirs (the last partition), and of the real positions on the virtual partition.
   double cost_virtual = 0.0, cost_real = 0.0, cost_real_in_virtual_partition = 0.0;
+  bool decentralized = false;  // false: the ideal network, every robot knows every state
+  NetworkTotals network;
 };
 
 // Throws ScenarioError if the scenario has no robots or no seed.

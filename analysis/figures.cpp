@@ -78,14 +78,17 @@ std::string scene_svg(const Scenario& scenario, const CoverageOutcome& outcome,
   std::vector<Vec2> virt, real;
   for (const RobotOutcome& r : outcome.robots) {
     virt.push_back(r.virtual_generator);
-    if (std::find(real.begin(), real.end(), r.position) == real.end()) real.push_back(r.position);
+    real.push_back(r.position);
   }
+  const auto share = VoronoiPartition::Coincident::share;  // robots at one place share a cell
+  const VoronoiPartition virtual_partition(integrator, virt, share);
+  const VoronoiPartition real_partition(integrator, real, share);
   const double line = std::max(1.0, unit / 400);
   svg.raw("<g style=\"clip-path:url(#omega)\">\n");
-  for (const auto& c : cell_rings(VoronoiPartition(integrator, virt))) {
+  for (const auto& c : cell_rings(virtual_partition)) {
     svg.rings({c}, fmt::format("fill:none;stroke:#1f5fbf;stroke-width:{:.2f}", 1.5 * line));
   }
-  for (const auto& c : cell_rings(VoronoiPartition(integrator, real))) {
+  for (const auto& c : cell_rings(real_partition)) {
     svg.rings({c}, fmt::format("fill:none;stroke:#d62728;stroke-width:{:.2f};stroke-dasharray:6,4",
                                1.5 * line));
   }

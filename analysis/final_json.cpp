@@ -26,6 +26,13 @@ std::string final_json(const CoverageOutcome& o) {
                {"real", o.cost_real},
                {"real_in_virtual_partition", o.cost_real_in_virtual_partition}};
   j["fingerprint"] = Fingerprint::to_hex(o.fingerprint);
+  nlohmann::ordered_json net;
+  net["decentralized"] = o.decentralized;
+  net["messages_sent"] = o.network.sent;
+  net["messages_delivered"] = o.network.delivered;
+  net["messages_lost"] = o.network.lost;
+  net["messages_unreachable"] = o.network.unreachable;
+  j["network"] = std::move(net);
   j["stop_reason"] = o.stop_reason;
   j["events"] = o.events;
   j["seed"] = o.seed;

@@ -8,7 +8,10 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const std::vector<Vec
     : trajectory_(dir / "trajectory.csv"), metrics_(dir / "metrics.csv") {
   trajectory_buffer_ = "t,robot,x,y,vx,vy\n";
   metrics_buffer_ =
-      "t,cost_real,cost_virtual,cost_real_in_virtual_partition,settled,projected,path_length\n";
+      "t,cost_real,cost_virtual,cost_real_in_virtual_partition,settled,projected,path_length,"
+      "messages_sent,messages_delivered,messages_lost,info_age_mean,info_age_max,"
+      "area_claimed_by_none,area_claimed_by_several,components,largest_component,diameter_hops,"
+      "average_degree,algebraic_connectivity\n";
   for (std::size_t i = 0; i < starts.size(); ++i) {
     fmt::format_to(std::back_inserter(trajectory_buffer_), "0,{},{},{},{},{}\n", i, starts[i].x,
                    starts[i].y, starts[i].x, starts[i].y);
@@ -27,7 +30,7 @@ void RunRecorder::on_motion(SimTime t, const Robot& r) {
 }
 
 void RunRecorder::on_sample(SimTime t, CoverageController& controller) {
-  MetricsSample s{t.seconds(), 0, 0, 0, 0, 0, 0};
+  MetricsSample s{t.seconds(), 0, 0, 0, 0, 0, 0, {}, {}};
   const VoronoiPartition& vp = controller.virtual_partition();
   s.cost_virtual = vp.cost();
   s.cost_real_in_virtual_partition = vp.cost(controller.positions());
@@ -37,9 +40,16 @@ void RunRecorder::on_sample(SimTime t, CoverageController& controller) {
     s.projected += r.projected ? 1 : 0;
     s.path_length += r.path_length;
   }
-  fmt::format_to(std::back_inserter(metrics_buffer_), "{},{},{},{},{},{},{}\n", s.t, s.cost_real,
+  s.messages = controller.network_totals();
+  s.network = controller.network_sample();
+  const NetworkSample& n = s.network;
+  fmt::format_to(std::back_inserter(metrics_buffer_),
+                 "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.t, s.cost_real,
                  s.cost_virtual, s.cost_real_in_virtual_partition, s.settled, s.projected,
-                 s.path_length);
+                 s.path_length, s.messages.sent, s.messages.delivered, s.messages.lost,
+                 n.info_age_mean, n.info_age_max, n.area_claimed_by_none, n.area_claimed_by_several,
+                 n.graph.components, n.graph.largest_component, n.graph.diameter,
+                 n.graph.average_degree, n.graph.algebraic_connectivity);
   samples_.push_back(s);
   flush(false);
 }

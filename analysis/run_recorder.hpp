@@ -17,6 +17,8 @@ struct MetricsSample {
   double cost_real, cost_virtual, cost_real_in_virtual_partition;
   std::size_t settled, projected;
   double path_length;
+  NetworkTotals messages;
+  NetworkSample network;
 };
 
 class RunRecorder final : public CoverageObserver {

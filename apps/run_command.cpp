@@ -50,7 +50,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--trace", opts->trace, "Also write the event trace to this file");
   cmd->callback([opts] {
     const Scenario scenario = load_scenario(opts->scenario);
-    if (scenario.robot_positions.empty()) throw ScenarioError(scenario.source + ": $: missing required key \"robots\"");
+    if (scenario.robot_positions.empty())
+      throw ScenarioError(scenario.source + ": $: missing required key \"robots\"");
     if (!scenario.seed) throw ScenarioError(scenario.source + ": $: missing required key \"seed\"");
     const fs::path dir = opts->out;
     CreatedDirectory guard{dir};

@@ -5,12 +5,22 @@
 #include <string>
 
 #include "core/sim_time.hpp"
+#include "net/channel.hpp"
 
 namespace covsim {
 
 enum class LoopMode {
   classic,   // a robot runs loop 1 again once it has reached its real target (or settled)
   periodic,  // loop 1 runs every loop1_period, whatever the robots are doing
+};
+
+// Neighbour messages. With the ideal channel (the default) every robot knows every other
+// robot's state at once, which is the centralized controller, and no message is simulated.
+struct NetworkConfig {
+  ChannelConfig channel;
+  SimTime broadcast_period = SimTime::from_ns(100'000'000);  // 0.1 s
+  bool random_phase = false;         // each robot's first broadcast at a random offset
+  std::optional<SimTime> staleness;  // entries older than this are dropped; unset: never
 };
 
 struct CoverageConfig {
@@ -27,6 +37,7 @@ struct CoverageConfig {
   std::optional<double> virtual_tolerance;
   SimTime max_time = SimTime::from_ns(600'000'000'000);   // 600 s
   SimTime sample_period = SimTime::from_ns(500'000'000);  // metrics every 0.5 s
+  NetworkConfig network;
 };
 
 }  // namespace covsim

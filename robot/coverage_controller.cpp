@@ -5,13 +5,14 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/geometry/delaunay.hpp"
 #include "planners/planner_factory.hpp"
 
 namespace covsim {
 
 namespace {
 // Same-time order within a tick: targets first, then motion, then samples, then the check.
-constexpr Priority kLoop1 = 0, kLoop2 = 1, kSample = 2, kCheck = 3;
+constexpr Priority kLoop1 = 0, kLoop2 = 1, kBroadcast = 2, kDeliver = 3, kSample = 4, kCheck = 5;
 constexpr EntityId kWorld = UINT32_MAX;  // the entity of events that concern every robot
 }  // namespace
 
@@ -36,6 +37,29 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
     if (observer_ != nullptr) observer_->on_sample(k.now(), *this);
   });
   check_kind_ = kernel_.add_kind("check", [this](Kernel& k, const Event&) { check(k); });
+
+  if (!config_.network.channel.is_ideal()) {
+    channel_ = std::make_unique<Channel>(config_.network.channel, kernel_.seed(), env);
+    tables_.resize(robots_.size());
+    next_seq_.assign(robots_.size(), 0);
+    broadcast_kind_ = kernel_.add_kind(
+        "broadcast", [this](Kernel& k, const Event& ev) { broadcast(k, ev.entity); });
+    deliver_kind_ = kernel_.add_kind("deliver", [this](Kernel&, const Event& ev) {
+      const auto slot = static_cast<std::uint32_t>(ev.payload);
+      tables_[ev.entity].update(in_flight_[slot]);
+      free_slots_.push_back(slot);
+    });
+    // Points of Ω on a lattice, for estimating where the robots' own cells disagree.
+    const Box& b = env.bounds();
+    const int m = 64;
+    for (int j = 0; j < m; ++j) {
+      for (int i = 0; i < m; ++i) {
+        const Vec2 p = b.lo + Vec2{(i + 0.5) * b.size().x / m, (j + 0.5) * b.size().y / m};
+        if (env.contains(p)) lattice_.push_back(p);
+      }
+    }
+    lattice_weight_ = lattice_.empty() ? 0.0 : env.area() / static_cast<double>(lattice_.size());
+  }
 }
 
 void CoverageController::start() {
@@ -50,6 +74,17 @@ void CoverageController::start() {
     // A loop-2 step at time t is the motion over (t - period, t]: the first ends at t0 + period.
     kernel_.schedule_periodic(Period::from_ns(config_.loop2_period.ns()), t0 + config_.loop2_period,
                               loop2_kind_, i, kLoop2);
+  }
+  if (channel_) {
+    const Period period = Period::from_ns(config_.network.broadcast_period.ns());
+    for (std::uint32_t i = 0; i < robots_.size(); ++i) {
+      SimTime phase = t0;
+      if (config_.network.random_phase) {
+        phase += SimTime::from_seconds(
+            kernel_.stream(i, "broadcast-phase").uniform(0.0, period.seconds()));
+      }
+      kernel_.schedule_periodic(period, phase, broadcast_kind_, i, kBroadcast);
+    }
   }
   kernel_.schedule_periodic(Period::from_ns(config_.sample_period.ns()), t0, sample_kind_, kWorld,
                             kSample);
@@ -71,26 +106,119 @@ std::vector<Vec2> CoverageController::virtual_generators() const {
   return out;
 }
 
+// Robots (or virtual generators) at the same place share one cell: the first gets it. H
+// does not depend on how a shared cell is split.
 const VoronoiPartition& CoverageController::virtual_partition() {
-  if (!virtual_partition_)
-    virtual_partition_ = std::make_unique<VoronoiPartition>(integrator_, virtual_generators());
+  if (!virtual_partition_) {
+    virtual_partition_ = std::make_unique<VoronoiPartition>(integrator_, virtual_generators(),
+                                                            VoronoiPartition::Coincident::share);
+  }
   return *virtual_partition_;
 }
 
 VoronoiPartition CoverageController::real_partition() const {
-  // Robots at the same place (two projections onto one boundary point) share one cell:
-  // the partition is of the distinct positions, and H does not depend on the split.
-  std::vector<Vec2> distinct;
-  for (const Robot& r : robots_) {
-    if (std::find(distinct.begin(), distinct.end(), r.position) == distinct.end())
-      distinct.push_back(r.position);
+  return VoronoiPartition(integrator_, positions(), VoronoiPartition::Coincident::share);
+}
+
+CellSummary CoverageController::own_cell(std::uint32_t i, ConvexPolygon* cell) {
+  const Vec2 g = robots_[i].virtual_generator;
+  if (!channel_) {
+    const VoronoiPartition& p = virtual_partition();
+    if (cell != nullptr) cell->assign(p.cell(i).begin(), p.cell(i).end());
+    return p.summary(i);
   }
-  return VoronoiPartition(integrator_, distinct);
+  // Decentralized: the Delaunay neighbours among the generators robot i has heard of (its
+  // own first, then by robot id; one that sits exactly on another is left out).
+  std::vector<Vec2> known{g};
+  for (const auto& [sender, m] : tables_[i].entries()) {
+    if (std::find(known.begin(), known.end(), m.virtual_generator) == known.end())
+      known.push_back(m.virtual_generator);
+  }
+  std::vector<Vec2> neighbors;
+  if (known.size() > 1) {
+    const DelaunayNeighbors nb = delaunay_neighbors(known);
+    for (std::uint32_t k = nb.start[0]; k < nb.start[1]; ++k)
+      neighbors.push_back(known[nb.index[k]]);
+  }
+  ConvexPolygon local;
+  integrator_.cell(g, neighbors, local);
+  const CellSummary s = summarize(integrator_.integrate(local, g), g);
+  if (cell != nullptr) *cell = std::move(local);
+  return s;
+}
+
+void CoverageController::broadcast(Kernel& k, std::uint32_t i) {
+  const Robot& r = robots_[i];
+  const StateMessage m{i, next_seq_[i]++, k.now(), r.virtual_generator, r.position};
+  for (std::uint32_t j = 0; j < robots_.size(); ++j) {
+    if (j == i) continue;
+    ++totals_.sent;
+    const Channel::Transmission t = channel_->transmit(i, j, r.position, robots_[j].position);
+    if (t.outcome == Channel::Outcome::lost) ++totals_.lost;
+    if (t.outcome == Channel::Outcome::out_of_range || t.outcome == Channel::Outcome::blocked)
+      ++totals_.unreachable;
+    if (t.outcome != Channel::Outcome::delivered) continue;
+    ++totals_.delivered;
+    std::uint32_t slot;
+    if (!free_slots_.empty()) {
+      slot = free_slots_.back();
+      free_slots_.pop_back();
+      in_flight_[slot] = m;
+    } else {
+      slot = static_cast<std::uint32_t>(in_flight_.size());
+      in_flight_.push_back(m);
+    }
+    k.schedule_in(t.delay, deliver_kind_, j, kDeliver, slot);
+  }
+}
+
+NetworkSample CoverageController::network_sample() {
+  NetworkSample s;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (std::uint32_t a = 0; a < robots_.size(); ++a) {
+    for (std::uint32_t b = a + 1; b < robots_.size(); ++b) {
+      if (!channel_ || channel_->in_reach(robots_[a].position, robots_[b].position))
+        edges.emplace_back(a, b);
+    }
+  }
+  s.graph = comm_graph_metrics(robots_.size(), edges);
+  if (!channel_) return s;  // every robot knows everything at once
+  double sum = 0.0;
+  std::size_t count = 0;
+  // Entries past the staleness limit are as good as gone (loop 1 drops them before use).
+  const double limit = config_.network.staleness ? config_.network.staleness->seconds() : INFINITY;
+  for (const NeighborTable& t : tables_) {
+    for (double age : t.ages(kernel_.now())) {
+      if (age > limit) continue;
+      sum += age;
+      ++count;
+      s.info_age_max = std::max(s.info_age_max, age);
+    }
+  }
+  s.info_age_mean = count > 0 ? sum / static_cast<double>(count) : 0.0;
+  std::vector<ConvexPolygon> cells(robots_.size());
+  for (std::uint32_t i = 0; i < robots_.size(); ++i)
+    own_cell(i, &cells[i]);
+  for (Vec2 p : lattice_) {
+    int owners = 0;
+    for (const ConvexPolygon& c : cells) {
+      bool in = c.size() >= 3;
+      for (std::size_t e = 0; e < c.size() && in; ++e)
+        in = cross(c[(e + 1) % c.size()] - c[e], p - c[e]) >= 0.0;
+      owners += in ? 1 : 0;
+    }
+    if (owners == 0) s.area_claimed_by_none += lattice_weight_;
+    if (owners > 1) s.area_claimed_by_several += lattice_weight_;
+  }
+  return s;
 }
 
 void CoverageController::loop1(std::uint32_t i) {
-  // Algorithm 1, lines 3-5: the cell of the virtual generator and its centroid.
-  const CellSummary cell = virtual_partition().summary(i);
+  // Algorithm 1, lines 3-5: the cell of the virtual generator among those the robot knows
+  // of, and its centroid.
+  if (channel_ && config_.network.staleness)
+    tables_[i].drop_stale(kernel_.now(), *config_.network.staleness);
+  const CellSummary cell = own_cell(i);
   Robot& r = robots_[i];
   r.virtual_target = cell.centroid;
   // Algorithm 2, lines 2-4: an obstacle boundary Voronoi region projects its target.

@@ -21,12 +21,31 @@
 
 #include "core/geometry/voronoi_partition.hpp"
 #include "core/kernel.hpp"
+#include "net/channel.hpp"
+#include "net/comm_graph.hpp"
+#include "net/neighbor_table.hpp"
 #include "robot/coverage_config.hpp"
 #include "robot/robot.hpp"
 
 namespace covsim {
 
 class CoverageController;
+
+struct NetworkTotals {
+  std::uint64_t sent = 0;  // link transmissions (one per receiver per broadcast)
+  std::uint64_t delivered = 0;
+  std::uint64_t lost = 0;         // dropped by the loss model
+  std::uint64_t unreachable = 0;  // out of range or blocked by walls
+};
+
+// The state of information at one instant.
+struct NetworkSample {
+  double info_age_mean = 0.0, info_age_max = 0.0;  // seconds, over all table entries
+  // Robots' own cells (each from its table) disagree: the area of Ω that no robot claims,
+  // and the area claimed by two or more (estimated on a lattice of about 4000 points of Ω).
+  double area_claimed_by_none = 0.0, area_claimed_by_several = 0.0;
+  CommGraphMetrics graph;
+};
 
 // Hooks for recording a run.
 class CoverageObserver {
@@ -59,10 +78,18 @@ class CoverageController {
   // The partition of the real positions (robots at the same place share one cell).
   VoronoiPartition real_partition() const;
 
+  bool decentralized() const { return channel_ != nullptr; }
+  const NetworkTotals& network_totals() const { return totals_; }
+  NetworkSample network_sample();
+  // Robot i's own cell and its summary as the robot computes them: among the virtual
+  // generators it knows (all of them, centralized; its table's, decentralized).
+  CellSummary own_cell(std::uint32_t i, ConvexPolygon* cell = nullptr);
+
  private:
   void loop1(std::uint32_t i);
   void loop2(Kernel& k, std::uint32_t i);
   void check(Kernel& k);
+  void broadcast(Kernel& k, std::uint32_t i);
 
   Kernel& kernel_;
   const Environment& env_;
@@ -73,7 +100,17 @@ class CoverageController {
   CoverageObserver* observer_ = nullptr;
   std::unique_ptr<VoronoiPartition> virtual_partition_;
   EventKind loop1_kind_ = 0, loop2_kind_ = 0, sample_kind_ = 0, check_kind_ = 0;
+  EventKind broadcast_kind_ = 0, deliver_kind_ = 0;
   bool converged_ = false;
+  // Decentralized operation.
+  std::unique_ptr<Channel> channel_;
+  std::vector<NeighborTable> tables_;
+  std::vector<std::uint64_t> next_seq_;
+  std::vector<StateMessage> in_flight_;  // messages on their way, by slot
+  std::vector<std::uint32_t> free_slots_;
+  NetworkTotals totals_;
+  std::vector<Vec2> lattice_;  // points of Ω for the disagreement estimate
+  double lattice_weight_ = 0.0;
 };
 
 }  // namespace covsim

@@ -104,7 +104,63 @@ SimTime read_period(const JsonValue& v) {
   return SimTime::from_seconds(s);
 }
 
+void read_network(const JsonValue& v, NetworkConfig& n) {
+  v.only_keys(
+      {"range", "line_of_sight", "broadcast_period", "random_phase", "staleness", "loss", "delay"});
+  if (auto r = v.find("range")) {
+    if (!r->is_null()) n.channel.range = r->positive();
+  }
+  if (auto l = v.find("line_of_sight")) n.channel.line_of_sight = l->boolean();
+  if (auto p = v.find("broadcast_period")) n.broadcast_period = read_period(*p);
+  if (auto p = v.find("random_phase")) n.random_phase = p->boolean();
+  if (auto s = v.find("staleness")) {
+    if (!s->is_null()) n.staleness = read_period(*s);
+  }
+  if (auto loss = v.find("loss")) {
+    const std::string model =
+        loss->at("model").one_of({"none", "bernoulli", "gilbert_elliott", "distance"});
+    if (model == "none") {
+      loss->only_keys({"model"});
+      n.channel.loss = NoLoss{};
+    } else if (model == "bernoulli") {
+      loss->only_keys({"model", "p"});
+      n.channel.loss = BernoulliLoss{loss->at("p").probability()};
+    } else if (model == "gilbert_elliott") {
+      loss->only_keys({"model", "p_good_to_bad", "p_bad_to_good", "loss_good", "loss_bad"});
+      n.channel.loss = GilbertElliottLoss{
+          loss->at("p_good_to_bad").probability(), loss->at("p_bad_to_good").probability(),
+          loss->at("loss_good").probability(), loss->at("loss_bad").probability()};
+    } else {
+      loss->only_keys({"model", "p_min", "d_max", "exponent"});
+      n.channel.loss = DistanceLoss{loss->at("p_min").probability(), loss->at("d_max").positive(),
+                                    loss->at("exponent").positive()};
+    }
+  }
+  if (auto delay = v.find("delay")) {
+    const std::string model =
+        delay->at("model").one_of({"constant", "uniform", "exponential", "lognormal"});
+    if (model == "constant") {
+      delay->only_keys({"model", "value"});
+      n.channel.delay = ConstantDelay{delay->at("value").non_negative()};
+    } else if (model == "uniform") {
+      delay->only_keys({"model", "min", "max"});
+      const double lo = delay->at("min").non_negative(), hi = delay->at("max").non_negative();
+      if (hi < lo) delay->at("max").fail(fmt::format("expected max >= min ({}), found {}", lo, hi));
+      n.channel.delay = UniformDelay{lo, hi};
+    } else if (model == "exponential") {
+      delay->only_keys({"model", "base", "mean"});
+      n.channel.delay =
+          ExponentialDelay{delay->at("base").non_negative(), delay->at("mean").non_negative()};
+    } else {
+      delay->only_keys({"model", "base", "mu", "sigma"});
+      n.channel.delay = LogNormalDelay{delay->at("base").non_negative(), delay->at("mu").number(),
+                                       delay->at("sigma").non_negative()};
+    }
+  }
+}
+
 void read_coverage(const JsonValue& root, CoverageConfig& c) {
+  if (auto n = root.find("network")) read_network(*n, c.network);
   if (auto r = root.find("robots")) {
     if (auto v = r->find("max_speed")) c.max_speed = v->positive();
   }
@@ -170,7 +226,7 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   s.json = json;
   const JsonValue root(s.json, source);
   root.only_keys({"environment", "density", "robots", "seed", "planner", "sensor", "loops",
-                  "convergence", "metrics"});
+                  "convergence", "metrics", "network"});
   s.environment = read_environment(root.at("environment"));
   s.density = read_density(root.at("density"), base_dir, *s.environment);
   if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment);

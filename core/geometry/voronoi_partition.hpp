@@ -9,9 +9,14 @@ namespace covsim {
 
 class VoronoiPartition {
  public:
-  // Cells from the generators' Delaunay neighbours. Throws GeometryError for coincident or
-  // non-finite generators.
-  VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators);
+  enum class Coincident {
+    reject,  // throw GeometryError naming the pair
+    share,   // the first of equal generators gets the cell, the others an empty one
+  };
+  // Cells from the generators' Delaunay neighbours. Throws GeometryError for non-finite
+  // generators, and for coincident ones unless told to share.
+  VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
+                   Coincident coincident = Coincident::reject);
 
   std::size_t size() const { return generators_.size(); }
   const std::vector<Vec2>& generators() const { return generators_; }

@@ -1,0 +1,101 @@
+#include <catch2/catch.hpp>
+
+#include "analysis/coverage_run.hpp"
+#include "scenarios/scenario.hpp"
+
+using namespace covsim;
+
+namespace {
+Scenario paper(const std::string& name) {
+  return load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/" + name);
+}
+
+Scenario with_network(const std::string& name, const nlohmann::json& network) {
+  nlohmann::json j = paper(name).json;
+  j["network"] = network;
+  return parse_scenario(j, name + " (with network)", std::string(COVSIM_SOURCE_DIR) + "/scenarios");
+}
+}  // namespace
+
+TEST_CASE("the default network, stated or not, reproduces the centralized run bit for bit",
+          "[network]") {
+  const nlohmann::json stated = {{"range", nullptr},
+                                 {"line_of_sight", false},
+                                 {"broadcast_period", 0.1},
+                                 {"loss", {{"model", "none"}}},
+                                 {"delay", {{"model", "constant"}, {"value", 0.0}}}};
+  for (const char* name : {"u_shape.json", "two_obstacles.json"}) {
+    const CoverageOutcome central = run_coverage(paper(name));
+    const CoverageOutcome explicit_default = run_coverage(with_network(name, stated));
+    CHECK_FALSE(explicit_default.decentralized);
+    CHECK(explicit_default.fingerprint == central.fingerprint);
+    CHECK(explicit_default.events == central.events);
+    for (std::size_t i = 0; i < central.robots.size(); ++i) {
+      CHECK(explicit_default.robots[i].position == central.robots[i].position);
+      CHECK(explicit_default.robots[i].virtual_generator == central.robots[i].virtual_generator);
+    }
+  }
+}
+
+TEST_CASE("at 30% Bernoulli loss the paper's scenarios still converge", "[network]") {
+  const nlohmann::json lossy = {
+      {"loss", {{"model", "bernoulli"}, {"p", 0.3}}},
+      {"delay", {{"model", "exponential"}, {"base", 0.01}, {"mean", 0.03}}},
+      {"random_phase", true}};
+  for (const char* name : {"u_shape.json", "two_obstacles.json", "l_shape.json", "fig2c.json"}) {
+    INFO(name);
+    const Scenario s = with_network(name, lossy);
+    const CoverageOutcome out = run_coverage(s);
+    CHECK(out.decentralized);
+    CHECK(out.converged);
+    if (s.robot_positions.size() > 1) {
+      CHECK(out.network.sent > 0);
+      const double observed =
+          static_cast<double>(out.network.lost) / static_cast<double>(out.network.sent);
+      const double n = static_cast<double>(out.network.sent);
+      CHECK(std::abs(observed - 0.3) <= 5 * std::sqrt(0.21 / n));
+      CHECK(out.network.delivered + out.network.lost + out.network.unreachable == out.network.sent);
+    }
+    for (const auto& r : out.robots)
+      CHECK(s.environment->contains(r.position));
+  }
+}
+
+TEST_CASE("at 100% loss every robot covers Ω alone, and the run ends", "[network]") {
+  const Scenario s =
+      with_network("two_obstacles.json", {{"loss", {{"model", "bernoulli"}, {"p", 1.0}}}});
+  const CoverageOutcome out = run_coverage(s);
+  CHECK(out.network.delivered == 0);
+  // Alone, each robot's cell is Ω: all head for Ω's centroid (or its projection).
+  const Density d = Density::uniform();
+  const CellIntegrator integrator(*s.environment, d);
+  const VoronoiPartition whole(integrator, {Vec2{0.5, 0.5}});
+  const Vec2 c = whole.summary(0).centroid;
+  for (const auto& r : out.robots)
+    CHECK(distance(r.virtual_target, c) < 1e-9);
+  CHECK(out.converged);
+}
+
+TEST_CASE("a short range and walls split the communication graph", "[network]") {
+  const Scenario s =
+      with_network("office.json", {{"range", 3.0}, {"line_of_sight", true}, {"staleness", 1.0}});
+  Scenario shorter = s;
+  // Periodic Lloyd updates spread the robots from the corridor into the rooms.
+  shorter.coverage.mode = LoopMode::periodic;
+  shorter.coverage.loop1_period = SimTime::from_seconds(1.0);
+  shorter.coverage.max_time = SimTime::from_seconds(200.0);
+  struct Graphs final : CoverageObserver {
+    std::size_t max_components = 0;
+    double max_age = 0.0;
+    void on_sample(SimTime, CoverageController& c) override {
+      const NetworkSample n = c.network_sample();
+      max_components = std::max(max_components, n.graph.components);
+      max_age = std::max(max_age, n.info_age_max);
+    }
+  } graphs;
+  const CoverageOutcome out = run_coverage(shorter, &graphs);
+  CHECK(out.network.unreachable > 0);
+  CHECK(graphs.max_components > 1);  // robots spread into rooms lose sight of each other
+  CHECK(graphs.max_age <= 1.0);      // nothing past the staleness limit counts
+  CHECK(out.sim_time <= SimTime::from_seconds(200.0));
+}
