@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/geometry/visibility.hpp"
+#include "core/random_stream.hpp"
 
 namespace covsim {
 
@@ -26,5 +27,13 @@ struct SensorReading {
 
 // A reading taken in the environment at p: what an ideal range and contact sensor report.
 SensorReading sense(const Environment& env, Vec2 p, double range);
+
+// The boundary edges touching p (what a contact sensor reports).
+std::vector<ContactEdge> contacts_at(const Environment& env, Vec2 p);
+
+// Gaussian range noise: every sensed point (piece ends, discontinuity points) farther than
+// `tolerance` from the robot moves along its ray from the robot by N(0, sigma²), never
+// closer than the robot itself. Contacts are left alone.
+void add_range_noise(SensorReading& r, RandomStream& rng, double sigma, double tolerance);
 
 }  // namespace covsim

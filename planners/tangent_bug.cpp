@@ -41,11 +41,14 @@ void TangentBug::set_goal(Vec2 goal) {
   path_ = 0.0;
   h_prev_ = kInf;
   heading_.reset();
+  idle_steps_ = 0;
   followed_min_.clear();
 }
 
 PlanStep TangentBug::move(const SensorReading& r, Vec2 next, PlanStatus s) {
-  path_ += distance(r.position, next);
+  const double d = distance(r.position, next);
+  path_ += d;
+  idle_steps_ = d > p_.tolerance ? 0 : idle_steps_ + 1;
   return PlanStep{next, s};
 }
 
@@ -58,6 +61,8 @@ PlanStep TangentBug::finish(Vec2 at, PlanStatus s) {
 PlanStep TangentBug::step(const SensorReading& r, double max_step) {
   if (!has_goal_ || mode_ == Mode::done) return PlanStep{r.position, status_};
   if (path_ > p_.path_budget) return finish(r.position, PlanStatus::stalled);
+  // Proposing to stay put, step after step, while meant to be moving: give up.
+  if (idle_steps_ > kMaxIdleSteps) return finish(r.position, PlanStatus::stalled);
   for (const ContactEdge& c : r.contacts)
     remember(c);
   switch (mode_) {
@@ -66,8 +71,8 @@ PlanStep TangentBug::step(const SensorReading& r, double max_step) {
     case Mode::to_boundary:
       if (!r.contacts.empty())
         return begin_following(r, max_step, Free{0.0, r.contacts.front().ring, std::nullopt});
-      return move(r, r.position + std::min(max_step, distance(boundary_target_, r.position)) *
-                                      unit(boundary_target_ - r.position));
+      // Toward the obstacle until touching it: the sensed point may be off by noise.
+      return move(r, r.position + max_step * boundary_direction_);
     case Mode::follow:
       return follow(r, max_step);
     case Mode::to_projection:
@@ -127,11 +132,12 @@ PlanStep TangentBug::begin_following(const SensorReading& r, double max_step, co
     // Get onto the blocking obstacle first: the closest point of the piece in the way.
     if (!blocked.piece) return finish(x, PlanStatus::stalled);
     const VisiblePiece& piece = r.visible.pieces[*blocked.piece];
-    boundary_target_ = project_to_segment(x, piece.a, piece.b).point;
+    const Vec2 target = project_to_segment(x, piece.a, piece.b).point;
+    boundary_direction_ = unit(target - x);
+    if (norm(boundary_direction_) == 0.0) boundary_direction_ = unit(goal_ - x);
     mode_ = Mode::to_boundary;
     ring_ = *blocked.blocker;
-    return move(r,
-                x + std::min(max_step, distance(boundary_target_, x)) * unit(boundary_target_ - x));
+    return move(r, x + max_step * boundary_direction_);
   }
   const std::uint32_t ring = r.contacts.front().ring;
   if (memory_[ring].complete() && goal_inside(ring)) return go_to_projection(r, max_step, ring);

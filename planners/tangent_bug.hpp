@@ -24,7 +24,9 @@
 // A new goal restarts motion to goal from the current position. What the robot learned by
 // circling an obstacle completely stays in memory: an unreachable goal inside an obstacle
 // it has circled is projected at once, without another loop. Every goal ends: a path longer
-// than `path_budget` reports `stalled`.
+// than `path_budget`, or proposing to stay put for more than 20 steps in a row, reports
+// `stalled`. To get onto an obstacle the robot drives toward it until touching it, so a
+// sensed point that noise put short of the wall does not hold it up.
 #include <limits>
 #include <map>
 #include <optional>
@@ -98,7 +100,9 @@ class TangentBug final : public Planner {
   Vec2 start_;
   bool left_start_ = false;
   std::uint32_t start_edge_ = 0;
-  Vec2 boundary_target_;
+  Vec2 boundary_direction_;
+  static constexpr int kMaxIdleSteps = 20;
+  int idle_steps_ = 0;
   std::map<std::uint32_t, double> followed_min_;  // per ring, for this goal
   // Projection.
   Vec2 projection_;

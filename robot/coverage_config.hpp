@@ -29,6 +29,12 @@ struct CoverageConfig {
   SimTime loop1_period = SimTime::from_ns(1'000'000'000);  // periodic mode only
   double max_speed = 0.1;                                  // m/s
   double sensor_range = INFINITY;                          // 0, finite or infinite
+  // The range sensor is read every sensor_period (unset: at every loop-2 step); a reading
+  // is lost with probability sensor_dropout (the planner keeps the last one) and its ranges
+  // carry Gaussian noise of sensor_noise_sigma metres. Contact sensing is always current.
+  std::optional<SimTime> sensor_period;
+  double sensor_noise_sigma = 0.0;
+  double sensor_dropout = 0.0;
   std::string planner = "tangent_bug";
   // Convergence: every robot settled at its real target (within position_tolerance) and
   // every virtual generator within virtual_tolerance of its virtual target. Unset: 1e-3

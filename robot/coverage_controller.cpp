@@ -12,7 +12,8 @@ namespace covsim {
 
 namespace {
 // Same-time order within a tick: targets first, then motion, then samples, then the check.
-constexpr Priority kLoop1 = 0, kLoop2 = 1, kBroadcast = 2, kDeliver = 3, kSample = 4, kCheck = 5;
+constexpr Priority kLoop1 = 0, kSense = 1, kLoop2 = 2, kBroadcast = 3, kDeliver = 4, kSample = 5,
+                   kCheck = 6;
 constexpr EntityId kWorld = UINT32_MAX;  // the entity of events that concern every robot
 }  // namespace
 
@@ -27,7 +28,7 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
     Robot r;
     r.id = i;
     r.position = r.virtual_generator = r.virtual_target = r.real_target = r.goal = starts[i];
-    r.planner = make_planner(config_.planner, env);
+    r.planner = make_planner(config_.planner, env, SensorSpec{config_.sensor_noise_sigma});
     robots_.push_back(std::move(r));
   }
   loop1_kind_ = kernel_.add_kind("loop1", [this](Kernel&, const Event& ev) { loop1(ev.entity); });
@@ -38,6 +39,16 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   });
   check_kind_ = kernel_.add_kind("check", [this](Kernel& k, const Event&) { check(k); });
 
+  if (!ideal_sensor()) {
+    for (std::uint32_t i = 0; i < robots_.size(); ++i) {
+      noise_rng_.push_back(kernel_.stream(i, "sensor-noise"));
+      dropout_rng_.push_back(kernel_.stream(i, "sensor-dropout"));
+    }
+    if (config_.sensor_period) {
+      sense_kind_ =
+          kernel_.add_kind("sense", [this](Kernel&, const Event& ev) { take_reading(ev.entity); });
+    }
+  }
   if (!config_.network.channel.is_ideal()) {
     channel_ = std::make_unique<Channel>(config_.network.channel, kernel_.seed(), env);
     tables_.resize(robots_.size());
@@ -74,6 +85,12 @@ void CoverageController::start() {
     // A loop-2 step at time t is the motion over (t - period, t]: the first ends at t0 + period.
     kernel_.schedule_periodic(Period::from_ns(config_.loop2_period.ns()), t0 + config_.loop2_period,
                               loop2_kind_, i, kLoop2);
+  }
+  if (config_.sensor_period) {
+    for (std::uint32_t i = 0; i < robots_.size(); ++i) {
+      kernel_.schedule_periodic(Period::from_ns(config_.sensor_period->ns()), t0, sense_kind_, i,
+                                kSense);
+    }
   }
   if (channel_) {
     const Period period = Period::from_ns(config_.network.broadcast_period.ns());
@@ -145,6 +162,24 @@ CellSummary CoverageController::own_cell(std::uint32_t i, ConvexPolygon* cell) {
   const CellSummary s = summarize(integrator_.integrate(local, g), g);
   if (cell != nullptr) *cell = std::move(local);
   return s;
+}
+
+bool CoverageController::ideal_sensor() const {
+  return !config_.sensor_period && config_.sensor_noise_sigma == 0.0 &&
+         config_.sensor_dropout == 0.0;
+}
+
+void CoverageController::take_reading(std::uint32_t i) {
+  Robot& r = robots_[i];
+  // A lost reading leaves the planner with the last one (the first is never lost).
+  if (config_.sensor_dropout > 0.0 && r.has_reading &&
+      dropout_rng_[i].bernoulli(config_.sensor_dropout))
+    return;
+  r.reading = sense(env_, r.position, config_.sensor_range);
+  if (config_.sensor_noise_sigma > 0.0) {
+    add_range_noise(r.reading, noise_rng_[i], config_.sensor_noise_sigma, env_.tolerance());
+  }
+  r.has_reading = true;
 }
 
 void CoverageController::broadcast(Kernel& k, std::uint32_t i) {
@@ -240,7 +275,17 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
   Robot& r = robots_[i];
   if (!is_settled(r.status)) {
     // Algorithm 2, line 5: a planner step toward the real target, in the real world.
-    const PlanStep s = r.planner->step(sense(env_, r.position, config_.sensor_range), step_);
+    PlanStep s;
+    if (ideal_sensor()) {
+      s = r.planner->step(sense(env_, r.position, config_.sensor_range), step_);
+    } else {
+      // The latest range reading, with the robot's own position and its current contacts.
+      if (!config_.sensor_period) take_reading(i);
+      SensorReading now = r.reading;
+      now.position = r.position;
+      now.contacts = contacts_at(env_, r.position);
+      s = r.planner->step(now, step_);
+    }
     const Vec2 next = env_.advance(r.position, s.next);
     if (!env_.segment_inside(r.position, next)) {
       throw std::logic_error(

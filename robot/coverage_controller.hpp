@@ -90,6 +90,8 @@ class CoverageController {
   void loop2(Kernel& k, std::uint32_t i);
   void check(Kernel& k);
   void broadcast(Kernel& k, std::uint32_t i);
+  void take_reading(std::uint32_t i);
+  bool ideal_sensor() const;
 
   Kernel& kernel_;
   const Environment& env_;
@@ -100,7 +102,8 @@ class CoverageController {
   CoverageObserver* observer_ = nullptr;
   std::unique_ptr<VoronoiPartition> virtual_partition_;
   EventKind loop1_kind_ = 0, loop2_kind_ = 0, sample_kind_ = 0, check_kind_ = 0;
-  EventKind broadcast_kind_ = 0, deliver_kind_ = 0;
+  EventKind broadcast_kind_ = 0, deliver_kind_ = 0, sense_kind_ = 0;
+  std::vector<RandomStream> noise_rng_, dropout_rng_;
   bool converged_ = false;
   // Decentralized operation.
   std::unique_ptr<Channel> channel_;

@@ -20,6 +20,8 @@ struct Robot {
   PlanStatus status = PlanStatus::reached;
   double path_length = 0.0;
   std::unique_ptr<Planner> planner;
+  SensorReading reading;  // the latest range reading
+  bool has_reading = false;
 };
 
 }  // namespace covsim

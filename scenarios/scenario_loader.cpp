@@ -169,9 +169,17 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     c.planner = p->at("type").one_of({"tangent_bug"});
   }
   if (auto s = root.find("sensor")) {
-    s->only_keys({"range"});
-    const JsonValue range = s->at("range");
-    c.sensor_range = range.is_null() ? INFINITY : range.non_negative();
+    s->only_keys({"range", "period", "noise", "dropout"});
+    if (auto range = s->find("range"))
+      c.sensor_range = range->is_null() ? INFINITY : range->non_negative();
+    if (auto p = s->find("period")) {
+      if (!p->is_null()) c.sensor_period = read_period(*p);
+    }
+    if (auto n = s->find("noise")) {
+      n->only_keys({"sigma"});
+      c.sensor_noise_sigma = n->at("sigma").non_negative();
+    }
+    if (auto d = s->find("dropout")) c.sensor_dropout = d->probability();
   }
   if (auto l = root.find("loops")) {
     l->only_keys({"mode", "loop1_period", "loop2_period"});

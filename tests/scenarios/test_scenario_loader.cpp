@@ -87,6 +87,26 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
                "$.seed: expected a non-negative integer");
   expect_error("{\n" + kSquare + ",\n" + d + ",,}", "bad.json:3:");
   expect_error("[1, 2]", "$: expected an object, found an array");
+  expect_error("{" + kSquare + ", " + d + R"(, "sensor": {"range": -1}})",
+               "$.sensor.range: expected a non-negative number");
+  expect_error("{" + kSquare + ", " + d + R"(, "sensor": {"dropout": 1.5}})",
+               "$.sensor.dropout: expected a probability");
+  expect_error("{" + kSquare + ", " + d + R"(, "sensor": {"noise": {"sd": 1}}})",
+               "$.sensor.noise.sd: unknown key");
+  expect_error("{" + kSquare + ", " + d + R"(, "network": {"loss": {"model": "bernoulli"}}})",
+               "$.network.loss: missing required key \"p\"");
+  expect_error(
+      "{" + kSquare + ", " + d + R"(, "network": {"loss": {"model": "bernoulli", "p": 2}}})",
+      "$.network.loss.p: expected a probability");
+  expect_error("{" + kSquare + ", " + d +
+                   R"(, "network": {"delay": {"model": "uniform", "min": 0.2, "max": 0.1}}})",
+               "$.network.delay.max: expected max >= min");
+  expect_error("{" + kSquare + ", " + d + R"(, "network": {"delay": {"model": "gamma"}}})",
+               "$.network.delay.model: expected one of");
+  expect_error("{" + kSquare + ", " + d + R"(, "loops": {"loop1_period": 1}})",
+               "$.loops.loop1_period: loop1_period applies to");
+  expect_error("{" + kSquare + ", " + d + R"(, "loops": {"mode": "periodic", "loop2_period": 0}})",
+               "$.loops.loop2_period: expected a positive number");
 }
 
 TEST_CASE("raster densities load relative to the scenario file", "[scenario]") {
