@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/line_chart.hpp"
 #include "analysis/svg_canvas.hpp"
 #include "core/geometry/voronoi_partition.hpp"
 
@@ -20,15 +21,6 @@ std::vector<std::vector<Vec2>> cell_rings(const VoronoiPartition& p) {
   return out;
 }
 
-// A "nice" tick step for a range: 1, 2 or 5 times a power of ten.
-double tick_step(double range, int ticks) {
-  const double raw = range / ticks;
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0, 10.0}) {
-    if (m * p >= raw) return m * p;
-  }
-  return 10 * p;
-}
 }  // namespace
 
 std::string scene_svg(const Scenario& scenario, const CoverageOutcome& outcome,
@@ -119,68 +111,14 @@ std::string scene_svg(const Scenario& scenario, const CoverageOutcome& outcome,
 }
 
 std::string cost_svg(const std::vector<MetricsSample>& samples) {
-  const double w = 640, h = 400, left = 70, right = 20, top = 30, bottom = 50;
-  double tmax = 1e-9, cmax = 0.0;
+  ChartSeries real{"real generators", {}, false, false},
+      virt{"virtual generators", {}, false, true};
   for (const MetricsSample& s : samples) {
-    tmax = std::max(tmax, s.t);
-    cmax = std::max({cmax, s.cost_real, s.cost_virtual});
+    real.points.push_back({s.t, s.cost_real});
+    virt.points.push_back({s.t, s.cost_virtual});
   }
-  if (!(cmax > 0)) cmax = 1.0;
-  const double ts = tick_step(tmax, 8), cs = tick_step(cmax, 6);
-  tmax = std::ceil(tmax / ts) * ts;
-  cmax = std::ceil(cmax / cs) * cs;
-  const auto X = [&](double t) { return left + (w - left - right) * t / tmax; };
-  const auto Y = [&](double c) { return h - bottom - (h - top - bottom) * c / cmax; };
-  std::string out = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} "
-      "{1}\" "
-      "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"{0}\" height=\"{1}\" "
-      "fill=\"#ffffff\"/>\n",
-      w, h);
-  for (double t = 0; t <= tmax + 1e-9 * ts; t += ts) {
-    out += fmt::format(
-        "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"#e0e0e0\"/>\n",
-        X(t), Y(0), Y(cmax));
-    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{:g}</text>\n", X(t),
-                       Y(0) + 16, t);
-  }
-  for (double c = 0; c <= cmax + 1e-9 * cs; c += cs) {
-    out += fmt::format(
-        "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#e0e0e0\"/>\n",
-        X(0), Y(c), X(tmax));
-    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{:g}</text>\n",
-                       X(0) - 6, Y(c) + 4, c);
-  }
-  out += fmt::format(
-      "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
-      "stroke=\"#000\"/>\n",
-      X(0), Y(cmax), X(tmax) - X(0), Y(0) - Y(cmax));
-  const auto series = [&](auto value, const char* colour, const char* dash) {
-    std::string pts;
-    for (const MetricsSample& s : samples)
-      pts += fmt::format("{:.2f},{:.2f} ", X(s.t), Y(value(s)));
-    return fmt::format(
-        "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\" stroke-dasharray=\"{}\" "
-        "points=\"{}\"/>\n",
-        colour, dash, pts);
-  };
-  out += series([](const MetricsSample& s) { return s.cost_real; }, "#d62728", "none");
-  out += series([](const MetricsSample& s) { return s.cost_virtual; }, "#1f5fbf", "6,4");
-  out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">time [s]</text>\n",
-                     (X(0) + X(tmax)) / 2, h - 12);
-  out += fmt::format(
-      "<text x=\"16\" y=\"{:.1f}\" text-anchor=\"middle\" transform=\"rotate(-90 16 {:.1f})\">cost "
-      "H</text>\n",
-      (Y(0) + Y(cmax)) / 2, (Y(0) + Y(cmax)) / 2);
-  out += fmt::format(
-      "<line x1=\"{0:.1f}\" y1=\"20\" x2=\"{1:.1f}\" y2=\"20\" stroke=\"#d62728\" "
-      "stroke-width=\"2\"/><text x=\"{2:.1f}\" "
-      "y=\"24\">real generators</text>\n<line x1=\"{3:.1f}\" y1=\"20\" x2=\"{4:.1f}\" y2=\"20\" "
-      "stroke=\"#1f5fbf\" "
-      "stroke-width=\"2\" stroke-dasharray=\"6,4\"/><text x=\"{5:.1f}\" y=\"24\">virtual "
-      "generators</text>\n",
-      w - 330, w - 300, w - 294, w - 170, w - 140, w - 134);
-  return out + "</svg>\n";
+  return line_chart_svg("Cost of the real and the virtual generators", "time [s]", "cost H",
+                        {real, virt});
 }
 
 }  // namespace covsim

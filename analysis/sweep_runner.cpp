@@ -1,0 +1,300 @@
+#include "analysis/sweep_runner.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "analysis/coverage_run.hpp"
+#include "analysis/line_chart.hpp"
+#include "analysis/statistics.hpp"
+#include "core/atomic_file.hpp"
+#include "core/fingerprint.hpp"
+
+namespace covsim {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json to_json(const SweepResult& r) {
+  nlohmann::json j{{"index", r.index},
+                   {"converged", r.converged},
+                   {"sim_time", r.sim_time},
+                   {"cost_virtual", r.cost_virtual},
+                   {"cost_real", r.cost_real},
+                   {"cost_real_in_virtual_partition", r.cost_real_in_virtual_partition},
+                   {"path_length", r.path_length},
+                   {"messages_sent", r.messages_sent},
+                   {"messages_lost", r.messages_lost},
+                   {"events", r.events},
+                   {"wall_time", r.wall_time},
+                   {"fingerprint", r.fingerprint}};
+  if (r.error) j["error"] = *r.error;
+  return j;
+}
+
+std::optional<SweepResult> from_json(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) return std::nullopt;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    SweepResult r;
+    r.index = j.at("index").get<std::size_t>();
+    r.converged = j.at("converged").get<bool>();
+    r.sim_time = j.at("sim_time").get<double>();
+    r.cost_virtual = j.at("cost_virtual").get<double>();
+    r.cost_real = j.at("cost_real").get<double>();
+    r.cost_real_in_virtual_partition = j.at("cost_real_in_virtual_partition").get<double>();
+    r.path_length = j.at("path_length").get<double>();
+    r.messages_sent = j.at("messages_sent").get<std::uint64_t>();
+    r.messages_lost = j.at("messages_lost").get<std::uint64_t>();
+    r.events = j.at("events").get<std::uint64_t>();
+    r.wall_time = j.at("wall_time").get<double>();
+    r.fingerprint = j.at("fingerprint").get<std::string>();
+    if (j.contains("error")) r.error = j.at("error").get<std::string>();
+    return r;
+  } catch (const std::exception&) {
+    return std::nullopt;  // a damaged result is run again
+  }
+}
+
+SweepResult execute(const SweepSpec& spec, const SweepRun& run) {
+  SweepResult r;
+  r.index = run.index;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const Scenario s =
+        parse_scenario(spec.scenario_for(run), fmt::format("{} (run {})", spec.source, run.index),
+                       spec.scenario_dir);
+    const CoverageOutcome o = run_coverage(s);
+    r.converged = o.converged;
+    r.sim_time = o.sim_time.seconds();
+    r.cost_virtual = o.cost_virtual;
+    r.cost_real = o.cost_real;
+    r.cost_real_in_virtual_partition = o.cost_real_in_virtual_partition;
+    for (const RobotOutcome& robot : o.robots)
+      r.path_length += robot.path_length;
+    r.messages_sent = o.network.sent;
+    r.messages_lost = o.network.lost;
+    r.events = o.events;
+    r.fingerprint = Fingerprint::to_hex(o.fingerprint);
+  } catch (const std::exception& e) {
+    r.error = e.what();
+  }
+  r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::string csv_value(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_null()) return "null";
+  return v.dump();
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s)
+    q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+}  // namespace
+
+const std::vector<std::string>& sweep_metrics() {
+  static const std::vector<std::string> m{
+      "sim_time",    "cost_virtual",  "cost_real", "cost_real_in_virtual_partition",
+      "path_length", "messages_lost", "wall_time"};
+  return m;
+}
+
+double metric_value(const SweepResult& r, const std::string& metric) {
+  if (metric == "sim_time") return r.sim_time;
+  if (metric == "cost_virtual") return r.cost_virtual;
+  if (metric == "cost_real") return r.cost_real;
+  if (metric == "cost_real_in_virtual_partition") return r.cost_real_in_virtual_partition;
+  if (metric == "path_length") return r.path_length;
+  if (metric == "messages_lost") return static_cast<double>(r.messages_lost);
+  if (metric == "wall_time") return r.wall_time;
+  return NAN;
+}
+
+std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
+                                   const SweepOptions& options) {
+  fs::create_directories(dir / "runs");
+  std::vector<SweepRun> all = spec.runs();
+  std::vector<SweepRun> mine;
+  for (const SweepRun& r : all) {
+    if (r.index % options.shards == options.shard) mine.push_back(r);
+  }
+  std::vector<SweepResult> results(mine.size());
+  std::vector<std::size_t> todo;
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    if (auto done = from_json(dir / "runs" / fmt::format("{}.json", mine[k].index));
+        done && done->index == mine[k].index) {
+      results[k] = *done;
+    } else {
+      todo.push_back(k);
+    }
+  }
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::size_t finished = mine.size() - todo.size(), failed = 0;
+  for (const SweepResult& r : results)
+    failed += r.error ? 1 : 0;
+  const auto start = std::chrono::steady_clock::now();
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  auto report = [&] {
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::size_t ran = finished - (mine.size() - todo.size());
+    const double left =
+        ran > 0 ? elapsed / static_cast<double>(ran) * static_cast<double>(mine.size() - finished)
+                : 0.0;
+    const std::string line = fmt::format("sweep: {}/{} runs done, {} failed, about {:.0f} s left",
+                                         finished, mine.size(), failed, left);
+    if (tty)
+      fmt::print(stderr, "\r{:<70}", line);
+    else
+      fmt::print(stderr, "{}\n", line);
+  };
+  auto worker = [&] {
+    for (std::size_t t = next++; t < todo.size(); t = next++) {
+      const std::size_t k = todo[t];
+      SweepResult r = execute(spec, mine[k]);
+      AtomicFile f(dir / "runs" / fmt::format("{}.json", r.index));
+      f.stream() << to_json(r).dump() << '\n';
+      f.commit();
+      std::lock_guard<std::mutex> lock(mutex);
+      results[k] = std::move(r);
+      ++finished;
+      failed += results[k].error ? 1 : 0;
+      if (options.progress) report();
+    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t j = 1; j < std::max<std::size_t>(1, options.jobs); ++j)
+    threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads)
+    t.join();
+  if (options.progress && tty) fmt::print(stderr, "\n");
+  return results;
+}
+
+void write_runs_csv(const fs::path& file, const SweepSpec& spec,
+                    const std::vector<SweepResult>& results) {
+  const std::vector<SweepRun> runs = spec.runs();
+  AtomicFile f(file);
+  std::string out = "run,setting";
+  for (const std::string& p : spec.parameters)
+    out += "," + csv_field(p);
+  out +=
+      ",seed,converged,sim_time,cost_virtual,cost_real,cost_real_in_virtual_partition,path_length,"
+      "messages_sent,messages_lost,events,wall_time,fingerprint,error\n";
+  for (const SweepResult& r : results) {
+    const SweepRun& run = runs.at(r.index);
+    out += fmt::format("{},{}", r.index, run.setting);
+    for (const auto& v : run.values)
+      out += "," + csv_field(csv_value(v));
+    out += fmt::format(",{},{},{},{},{},{},{},{},{},{},{},{},{}\n", run.seed, r.converged ? 1 : 0,
+                       r.sim_time, r.cost_virtual, r.cost_real, r.cost_real_in_virtual_partition,
+                       r.path_length, r.messages_sent, r.messages_lost, r.events, r.wall_time,
+                       r.fingerprint, csv_field(r.error.value_or("")));
+  }
+  f.stream() << out;
+  f.commit();
+}
+
+void write_summary_csv(const fs::path& file, const SweepSpec& spec,
+                       const std::vector<SweepResult>& results) {
+  const std::vector<SweepRun> runs = spec.runs();
+  std::map<std::size_t, std::vector<const SweepResult*>> by_setting;
+  for (const SweepResult& r : results)
+    by_setting[runs.at(r.index).setting].push_back(&r);
+  AtomicFile f(file);
+  std::string out = "setting";
+  for (const std::string& p : spec.parameters)
+    out += "," + csv_field(p);
+  out += ",runs,failed,converged_rate";
+  for (const std::string& m : sweep_metrics())
+    out += fmt::format(",{0}_mean,{0}_std,{0}_ci95", m);
+  out += "\n";
+  for (const auto& [setting, rs] : by_setting) {
+    out += fmt::format("{}", setting);
+    for (const auto& v : spec.settings[setting])
+      out += "," + csv_field(csv_value(v));
+    std::size_t ok = 0, converged = 0;
+    for (const SweepResult* r : rs) {
+      ok += r->error ? 0 : 1;
+      converged += (!r->error && r->converged) ? 1 : 0;
+    }
+    out += fmt::format(",{},{},{}", rs.size(), rs.size() - ok,
+                       ok > 0 ? static_cast<double>(converged) / ok : 0.0);
+    for (const std::string& m : sweep_metrics()) {
+      std::vector<double> xs;
+      for (const SweepResult* r : rs) {
+        if (!r->error) xs.push_back(metric_value(*r, m));
+      }
+      const SampleSummary s = summarize_sample(xs);
+      out += fmt::format(",{},{},{}", s.mean, s.stddev, s.ci95);
+    }
+    out += "\n";
+  }
+  f.stream() << out;
+  f.commit();
+}
+
+std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& spec,
+                                        const std::vector<SweepResult>& results) {
+  std::vector<fs::path> written;
+  const std::vector<SweepRun> runs = spec.runs();
+  for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
+    bool numeric = true;
+    for (const auto& s : spec.settings)
+      numeric = numeric && s[p].is_number();
+    if (!numeric) continue;
+    for (const std::string& metric : sweep_metrics()) {
+      if (metric == "wall_time") continue;
+      // One line per combination of the other parameters; points at this parameter's values.
+      std::map<std::string, std::map<double, std::vector<double>>> lines;
+      for (const SweepResult& r : results) {
+        if (r.error) continue;
+        const SweepRun& run = runs.at(r.index);
+        std::string label;
+        for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
+          if (q != p)
+            label +=
+                (label.empty() ? "" : ", ") + spec.parameters[q] + " = " + csv_value(run.values[q]);
+        }
+        lines[label.empty() ? "all runs" : label][run.values[p].get<double>()].push_back(
+            metric_value(r, metric));
+      }
+      std::vector<ChartSeries> series;
+      for (const auto& [label, points] : lines) {
+        ChartSeries s{label, {}, true, false};
+        for (const auto& [x, ys] : points) {
+          const SampleSummary sum = summarize_sample(ys);
+          s.points.push_back({x, sum.mean, sum.mean - sum.ci95, sum.mean + sum.ci95});
+        }
+        series.push_back(std::move(s));
+      }
+      const fs::path file = dir / fmt::format("{}_vs_{}.svg", metric, spec.parameters[p]);
+      AtomicFile f(file);
+      f.stream() << line_chart_svg(fmt::format("{} (mean, 95% confidence band)", metric),
+                                   spec.parameters[p], metric, series);
+      f.commit();
+      written.push_back(file);
+    }
+  }
+  return written;
+}
+
+}  // namespace covsim

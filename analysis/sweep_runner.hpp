@@ -1,0 +1,50 @@
+#pragma once
+// Runs a sweep: every run independent, on N threads, each result saved to
+// DIR/runs/<index>.json as soon as it is known (so a rerun skips what is done), then
+// DIR/runs.csv, DIR/summary.csv and plots. Results do not depend on N.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/sweep_spec.hpp"
+
+namespace covsim {
+
+struct SweepResult {
+  std::size_t index = 0;
+  std::optional<std::string> error;  // the run failed: why
+  bool converged = false;
+  double sim_time = 0.0;
+  double cost_virtual = 0.0, cost_real = 0.0, cost_real_in_virtual_partition = 0.0;
+  double path_length = 0.0;
+  std::uint64_t messages_sent = 0, messages_lost = 0, events = 0;
+  double wall_time = 0.0;  // seconds; the one field that differs between machines and runs
+  std::string fingerprint;
+};
+
+struct SweepOptions {
+  std::size_t jobs = 1;
+  bool progress = true;   // lines on stderr
+  std::size_t shard = 0;  // run only runs with index % shards == shard
+  std::size_t shards = 1;
+};
+
+std::vector<SweepResult> run_sweep(const SweepSpec& spec, const std::filesystem::path& dir,
+                                   const SweepOptions& options);
+
+// The metrics summarised per setting, in this order, as they appear in summary.csv.
+const std::vector<std::string>& sweep_metrics();
+double metric_value(const SweepResult& r, const std::string& metric);
+
+void write_runs_csv(const std::filesystem::path& file, const SweepSpec& spec,
+                    const std::vector<SweepResult>& results);
+void write_summary_csv(const std::filesystem::path& file, const SweepSpec& spec,
+                       const std::vector<SweepResult>& results);
+// One SVG per (metric, numeric parameter): mean with a 95% confidence band, one line per
+// combination of the other parameters. Returns the files written.
+std::vector<std::filesystem::path> write_sweep_plots(const std::filesystem::path& dir,
+                                                     const SweepSpec& spec,
+                                                     const std::vector<SweepResult>& results);
+
+}  // namespace covsim

@@ -1,0 +1,38 @@
+#pragma once
+// A sweep: a scenario, parameters to vary (dotted JSON paths into it) and seeds. Every
+// combination of the grid's values (and each row of "zip", whose lists vary together) runs
+// with every seed; the seed replaces the scenario's "seed". See docs/sweeps.md.
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace covsim {
+
+struct SweepRun {
+  std::size_t index = 0;    // position in the sweep, fixed by the file alone
+  std::size_t setting = 0;  // which combination of parameter values
+  std::uint64_t seed = 0;
+  std::vector<nlohmann::json> values;  // one per parameter, in SweepSpec::parameters order
+};
+
+struct SweepSpec {
+  std::string source;
+  nlohmann::json scenario;                            // the base scenario
+  std::filesystem::path scenario_dir;                 // for files the scenario names
+  std::vector<std::string> parameters;                // grid keys in file order, then zip keys
+  std::vector<std::vector<nlohmann::json>> settings;  // values per setting
+  std::vector<std::uint64_t> seeds;
+  std::vector<SweepRun> runs() const;  // settings outer, seeds inner
+  // The scenario JSON of one run: the base with the run's values and seed put in.
+  nlohmann::json scenario_for(const SweepRun& run) const;
+};
+
+// Throws ScenarioError naming the file, the JSON path and what was expected.
+SweepSpec load_sweep(const std::filesystem::path& file);
+// Sets a dotted path ("network.loss.p") in a JSON object, creating objects on the way.
+void set_dotted(nlohmann::json& j, const std::string& dotted, const nlohmann::json& value);
+
+}  // namespace covsim

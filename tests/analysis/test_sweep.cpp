@@ -1,0 +1,143 @@
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <filesystem>
+
+#include <fstream>
+
+#include "analysis/statistics.hpp"
+#include "analysis/sweep_runner.hpp"
+#include "scenarios/scenario_error.hpp"
+
+using namespace covsim;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path temp_dir(const std::string& name) {
+  const fs::path d =
+      fs::temp_directory_path() / ("covsim-sweep-" + std::to_string(::getpid()) + "-" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+fs::path write_sweep(const fs::path& dir, const std::string& body) {
+  std::ofstream(dir / "sweep.json") << body;
+  return dir / "sweep.json";
+}
+
+const std::string kSweep =
+    R"({"scenario": ")" + std::string(COVSIM_SOURCE_DIR) + R"(/scenarios/two_obstacles.json",
+  "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.0, 0.4]},
+  "seeds": [3, 4, 5]})";
+
+// Everything but the wall time.
+std::vector<std::string> comparable(const std::vector<SweepResult>& rs) {
+  std::vector<std::string> out;
+  for (const auto& r : rs) {
+    out.push_back(fmt::format("{} {} {} {} {} {} {} {}", r.index, r.converged, r.sim_time,
+                              r.cost_virtual, r.cost_real, r.messages_lost, r.fingerprint,
+                              r.error.value_or("")));
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("summary statistics by hand", "[sweep]") {
+  const SampleSummary s = summarize_sample({2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0});
+  CHECK(s.n == 8);
+  CHECK(s.mean == Approx(5.0));
+  CHECK(s.stddev == Approx(std::sqrt(32.0 / 7.0)));
+  CHECK(s.ci95 == Approx(2.365 * std::sqrt(32.0 / 7.0) / std::sqrt(8.0)));
+  CHECK(summarize_sample({3.0}).ci95 == 0.0);
+  CHECK(student_t_975(1) == Approx(12.706));
+  CHECK(student_t_975(100) == Approx(1.984).epsilon(1e-3));
+}
+
+TEST_CASE("a sweep gives the same results whatever the number of jobs", "[sweep]") {
+  const fs::path dir = temp_dir("jobs");
+  const SweepSpec spec = load_sweep(write_sweep(dir, kSweep));
+  CHECK(spec.runs().size() == 6);
+  CHECK(spec.parameters == std::vector<std::string>{"network.loss.model", "network.loss.p"});
+  const auto one = run_sweep(spec, dir / "one", SweepOptions{1, false, 0, 1});
+  const auto two = run_sweep(spec, dir / "two", SweepOptions{2, false, 0, 1});
+  CHECK(comparable(one) == comparable(two));
+  for (const auto& r : one)
+    CHECK_FALSE(r.error);
+  // Loss changes the runs; without loss the seed does not matter.
+  CHECK(one[0].fingerprint == one[1].fingerprint);
+  CHECK(one[3].fingerprint != one[4].fingerprint);
+}
+
+TEST_CASE("a rerun skips finished runs and redoes missing ones", "[sweep]") {
+  const fs::path dir = temp_dir("resume");
+  const SweepSpec spec = load_sweep(write_sweep(dir, kSweep));
+  const auto first = run_sweep(spec, dir / "out", SweepOptions{2, false, 0, 1});
+  // Mark one result (a rerun must keep it as it is) and remove another (it must be redone).
+  {
+    std::ifstream in(dir / "out" / "runs" / "1.json");
+    nlohmann::json j = nlohmann::json::parse(in);
+    j["wall_time"] = 12345.0;
+    std::ofstream(dir / "out" / "runs" / "1.json") << j.dump();
+  }
+  fs::remove(dir / "out" / "runs" / "4.json");
+  const auto second = run_sweep(spec, dir / "out", SweepOptions{2, false, 0, 1});
+  CHECK(second[1].wall_time == 12345.0);
+  CHECK(fs::exists(dir / "out" / "runs" / "4.json"));
+  CHECK(comparable(first) == comparable(second));
+}
+
+TEST_CASE("a failing run is recorded and the sweep goes on", "[sweep]") {
+  const fs::path dir = temp_dir("failure");
+  const SweepSpec spec = load_sweep(write_sweep(
+      dir,
+      R"({"scenario": ")" + std::string(COVSIM_SOURCE_DIR) +
+          R"(/scenarios/u_shape.json", "grid": {"robots.max_speed": [0.1, -1]}, "seeds": [1]})"));
+  const auto results = run_sweep(spec, dir / "out", SweepOptions{1, false, 0, 1});
+  REQUIRE(results.size() == 2);
+  CHECK_FALSE(results[0].error);
+  CHECK(results[0].converged);
+  REQUIRE(results[1].error);
+  CHECK_THAT(*results[1].error, Catch::Contains("$.robots.max_speed: expected a positive number"));
+  write_runs_csv(dir / "out" / "runs.csv", spec, results);
+  write_summary_csv(dir / "out" / "summary.csv", spec, results);
+  std::ifstream in(dir / "out" / "summary.csv");
+  std::string header, row0, row1;
+  std::getline(in, header);
+  std::getline(in, row0);
+  std::getline(in, row1);
+  CHECK_THAT(row1, Catch::StartsWith("1,-1,1,1,0,"));  // one run, one failed, no convergence
+}
+
+TEST_CASE("shards split the runs without overlap", "[sweep]") {
+  const fs::path dir = temp_dir("shards");
+  const SweepSpec spec = load_sweep(write_sweep(dir, kSweep));
+  const auto a = run_sweep(spec, dir / "a", SweepOptions{1, false, 0, 2});
+  const auto b = run_sweep(spec, dir / "b", SweepOptions{1, false, 1, 2});
+  CHECK(a.size() + b.size() == 6);
+  for (const auto& r : a)
+    CHECK(r.index % 2 == 0);
+  for (const auto& r : b)
+    CHECK(r.index % 2 == 1);
+}
+
+TEST_CASE("sweep files are validated", "[sweep]") {
+  const fs::path dir = temp_dir("errors");
+  const std::string scenario =
+      R"("scenario": ")" + std::string(COVSIM_SOURCE_DIR) + R"(/scenarios/u_shape.json")";
+  auto error = [&](const std::string& body, const std::string& fragment) {
+    CHECK_THROWS_WITH(load_sweep(write_sweep(dir, body)), Catch::Contains(fragment));
+  };
+  error("{" + scenario + R"(, "seeds": [1], "colour": 1})", "$.colour: unknown key");
+  error("{" + scenario + R"(, "grid": {"seed": [1, 2]}, "seeds": [1]})",
+        "\"seed\" is set by \"seeds\"");
+  error("{" + scenario + R"(, "zip": {"a.b": [1, 2], "c.d": [1]}, "seeds": [1]})",
+        "expected 2 values");
+  error("{" + scenario + R"(, "grid": {"a": []}, "seeds": [1]})",
+        "$.grid.a: expected at least one value");
+  error("{" + scenario + R"(, "seeds": {"count": 0}})", "$.seeds.count: expected a count");
+  error("{" + scenario + "}", "missing required key \"seeds\"");
+  error(R"({"scenario": 3, "seeds": [1]})", "$.scenario: expected a scenario file name");
+}
