@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -257,10 +258,14 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
   std::vector<fs::path> written;
   const std::vector<SweepRun> runs = spec.runs();
   for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
+    // Only parameters that are numbers and take at least two values make an x axis.
     bool numeric = true;
-    for (const auto& s : spec.settings)
+    std::set<double> values;
+    for (const auto& s : spec.settings) {
       numeric = numeric && s[p].is_number();
-    if (!numeric) continue;
+      if (numeric) values.insert(s[p].get<double>());
+    }
+    if (!numeric || values.size() < 2) continue;
     for (const std::string& metric : sweep_metrics()) {
       if (metric == "wall_time") continue;
       // One line per combination of the other parameters; points at this parameter's values.

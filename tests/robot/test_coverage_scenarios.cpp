@@ -4,6 +4,7 @@
 #include <map>
 
 #include "analysis/coverage_run.hpp"
+#include "core/fingerprint.hpp"
 #include "scenarios/scenario.hpp"
 
 using namespace covsim;
@@ -178,5 +179,19 @@ TEST_CASE("periodic loop 1 converges too, down to ratio 1", "[coverage]") {
         SimTime::from_ns(static_cast<std::int64_t>(ratio * s.coverage.loop2_period.ns()));
     INFO("ratio " << ratio);
     check_run(s);
+  }
+}
+
+TEST_CASE("the paper's scenarios reproduce their golden fingerprints", "[coverage][golden]") {
+  // Golden values. A change that alters any run changes them: update them deliberately and
+  // say why in the commit message.
+  const std::pair<const char*, const char*> golden[] = {
+      {"l_shape.json", "e983ea74fa586194"},       {"u_shape.json", "2b666af0d26d9161"},
+      {"two_obstacles.json", "dc712dc098df3364"}, {"fig2b.json", "f9763373856d2f0c"},
+      {"fig2c.json", "95efb61cccd894bd"},         {"fig2d.json", "7715e47e66512a6c"},
+      {"office.json", "62f154fd0a0411e0"}};
+  for (const auto& [name, fingerprint] : golden) {
+    INFO(name);
+    CHECK(Fingerprint::to_hex(run_coverage(paper(name)).fingerprint) == fingerprint);
   }
 }
