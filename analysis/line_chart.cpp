@@ -115,8 +115,8 @@ std::string line_chart_svg(const std::string& title, const std::string& x_label,
         "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" "
         "stroke-width=\"2\"{4}/>"
         "<text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>\n",
-        w - right - 200, ly, w - right - 175, colour, s.dashed ? " stroke-dasharray=\"6,4\"" : "",
-        w - right - 168, ly + 4, escape(s.label));
+        w - right - 300, ly, w - right - 275, colour, s.dashed ? " stroke-dasharray=\"6,4\"" : "",
+        w - right - 268, ly + 4, escape(s.label));
   }
   out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n",
                      (X(x0) + X(x1)) / 2, h - 12, escape(x_label));
