@@ -257,6 +257,12 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
                                         const std::vector<SweepResult>& results) {
   std::vector<fs::path> written;
   const std::vector<SweepRun> runs = spec.runs();
+  // Parameters that take more than one value: only these name the lines.
+  std::vector<bool> varies(spec.parameters.size(), false);
+  for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
+    for (const auto& s : spec.settings)
+      varies[q] = varies[q] || s[q] != spec.settings.front()[q];
+  }
   for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
     // Only parameters that are numbers and take at least two values make an x axis.
     bool numeric = true;
@@ -275,11 +281,11 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
         const SweepRun& run = runs.at(r.index);
         std::string label;
         for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
-          if (q != p)
+          if (q != p && varies[q])
             label +=
                 (label.empty() ? "" : ", ") + spec.parameters[q] + " = " + csv_value(run.values[q]);
         }
-        lines[label.empty() ? "all runs" : label][run.values[p].get<double>()].push_back(
+        lines[label.empty() ? "mean over seeds" : label][run.values[p].get<double>()].push_back(
             metric_value(r, metric));
       }
       std::vector<ChartSeries> series;
