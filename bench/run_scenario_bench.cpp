@@ -9,7 +9,8 @@
 namespace {
 
 void BM_RunScenario(benchmark::State& state, const char* file) {
-  const covsim::Scenario scenario = covsim::load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/" + file);
+  const covsim::Scenario scenario =
+      covsim::load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/" + file);
   for (auto _ : state) {
     const covsim::CoverageOutcome out = covsim::run_coverage(scenario);
     if (!out.converged) state.SkipWithError("the run did not converge");
