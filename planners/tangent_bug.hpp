@@ -54,7 +54,6 @@ class TangentBug final : public Planner {
 
   enum class Mode { to_goal, to_boundary, follow, to_projection, done };
   Mode mode() const { return mode_; }
-  double path_length() const { return path_; }
 
  private:
   struct RingMemory {

@@ -26,10 +26,6 @@ class GridIndex {
   std::int32_t ny() const { return ny_; }
   Vec2 cell_size() const { return cell_; }
   const Box& bounds() const { return bounds_; }
-  Box cell_box(std::int32_t i, std::int32_t j) const {
-    const Vec2 lo{bounds_.lo.x + i * cell_.x, bounds_.lo.y + j * cell_.y};
-    return Box{lo, lo + cell_};
-  }
   // The cells a box covers, clamped to the grid (empty if it misses the grid).
   CellRange cells(const Box& b) const;
   std::int32_t cell_index(std::int32_t i, std::int32_t j) const { return j * nx_ + i; }
@@ -57,10 +53,6 @@ class GridIndex {
     const std::int32_t c = cell_index(i, j);
     for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k)
       f(items_[k]);
-  }
-  std::uint32_t count_in_cell(std::int32_t i, std::int32_t j) const {
-    const std::int32_t c = cell_index(i, j);
-    return start_[c + 1] - start_[c];
   }
 
  private:
