@@ -6,7 +6,7 @@
 namespace covsim {
 
 CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observer,
-                             TraceWriter* trace) {
+                             TraceSink* trace) {
   if (scenario.robot_positions.empty()) {
     throw ScenarioError(scenario.source +
                         ": $: missing required key \"robots\" (a run needs robots)");

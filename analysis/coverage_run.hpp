@@ -11,7 +11,7 @@
 
 namespace covsim {
 
-class TraceWriter;
+class TraceSink;
 
 struct RobotOutcome {
   Vec2 position, virtual_generator, virtual_target, real_target;
@@ -37,6 +37,6 @@ struct CoverageOutcome {
 
 // Throws ScenarioError if the scenario has no robots or no seed.
 CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observer = nullptr,
-                             TraceWriter* trace = nullptr);
+                             TraceSink* trace = nullptr);
 
 }  // namespace covsim

@@ -11,11 +11,11 @@
 #include "analysis/figures.hpp"
 #include "analysis/final_json.hpp"
 #include "analysis/run_recorder.hpp"
+#include "analysis/trace_replay.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "core/atomic_file.hpp"
 #include "core/fingerprint.hpp"
-#include "core/hash.hpp"
 #include "core/trace.hpp"
 #include "scenarios/scenario_error.hpp"
 
@@ -66,9 +66,7 @@ void add_run_command(CLI::App& app) {
     }
     std::unique_ptr<TraceWriter> trace;
     if (!opts->trace.empty()) {
-      TraceHeader header;
-      header.seed = scenario.seed.value_or(0);
-      header.scenario_hash = fnv1a64(scenario.json.dump());
+      const TraceHeader header = trace_header_for(scenario, fs::path(opts->scenario).parent_path());
       trace = std::make_unique<TraceWriter>(opts->trace, header);
     }
     RunRecorder recorder(dir, scenario.robot_positions);

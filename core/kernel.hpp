@@ -20,7 +20,7 @@
 namespace covsim {
 
 class Kernel;
-class TraceWriter;
+class TraceSink;
 
 using Handler = std::function<void(Kernel&, const Event&)>;
 
@@ -90,8 +90,8 @@ class Kernel {
 
   Fingerprint& fingerprint() { return fingerprint_; }
   const Fingerprint& fingerprint() const { return fingerprint_; }
-  // Records every dispatched event; the writer must outlive the runs it records.
-  void attach_trace(TraceWriter* trace) { trace_ = trace; }
+  // Records every dispatched event; the sink must outlive the runs it records.
+  void attach_trace(TraceSink* trace) { trace_ = trace; }
 
   // The random stream for (this run's seed, entity, purpose).
   RandomStream stream(std::uint64_t entity, std::string_view purpose) const {
@@ -137,7 +137,7 @@ class Kernel {
   std::vector<Timer> timers_;
   std::vector<std::uint32_t> free_timers_;
   Fingerprint fingerprint_;
-  TraceWriter* trace_ = nullptr;
+  TraceSink* trace_ = nullptr;
 };
 
 }  // namespace covsim

@@ -41,11 +41,19 @@ struct TraceRecord {
   friend bool operator==(const TraceRecord&, const TraceRecord&) = default;
 };
 
-class TraceWriter {
+// Where the kernel sends each dispatched event, with the running fingerprint after it.
+class TraceSink {
+ public:
+  virtual ~TraceSink() = default;
+  virtual void record(std::uint64_t index, SimTime t, const std::string& kind, std::uint32_t entity,
+                      std::uint64_t fingerprint) = 0;
+};
+
+class TraceWriter final : public TraceSink {
  public:
   TraceWriter(std::filesystem::path path, const TraceHeader& header);
   void record(std::uint64_t index, SimTime t, const std::string& kind, std::uint32_t entity,
-              std::uint64_t fingerprint);
+              std::uint64_t fingerprint) override;
   // The trace file appears only when committed (see AtomicFile).
   void commit();
 

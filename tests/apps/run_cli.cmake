@@ -63,3 +63,16 @@ execute_process(COMMAND ${COVSIM} run ${SOURCE}/scenarios/u_shape.json --out ${W
 if(NOT rc EQUAL 2)
   message(FATAL_ERROR "--out naming a file: expected exit 2, got ${rc}: ${err}")
 endif()
+
+# A traced run replays: exit 0 and the event count of final.json.
+execute_process(COMMAND ${COVSIM} run ${SOURCE}/scenarios/u_shape.json --out ${WORK}/t --trace ${WORK}/t.trace
+                RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "traced run failed (${rc}): ${err}")
+endif()
+file(READ ${WORK}/t/final.json traced)
+string(JSON events GET "${traced}" events)
+execute_process(COMMAND ${COVSIM} replay ${WORK}/t.trace RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "replay matches: ${events} events, fingerprint ${fp}")
+  message(FATAL_ERROR "replay: expected a match of ${events} events with fingerprint ${fp}, got ${rc}: ${out} ${err}")
+endif()

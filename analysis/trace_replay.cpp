@@ -1,0 +1,86 @@
+#include "analysis/trace_replay.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/coverage_run.hpp"
+#include "core/hash.hpp"
+#include "scenarios/scenario_error.hpp"
+
+namespace covsim {
+
+namespace {
+// Compares each event of the replay with the next record of the trace, and stops the run
+// at the first difference.
+class TraceComparer final : public TraceSink {
+ public:
+  explicit TraceComparer(TraceReader& reader) : reader_(reader) {}
+  struct Diverged {};
+  void record(std::uint64_t index, SimTime t, const std::string& kind, std::uint32_t entity,
+              std::uint64_t fingerprint) override {
+    const TraceRecord now{index, t, kind, entity, fingerprint};
+    std::optional<TraceRecord> then = reader_.next();
+    ++compared_;
+    if (then != now) {
+      divergence_ = TraceDivergence{index, std::move(then), now};
+      throw Diverged{};
+    }
+  }
+  std::uint64_t compared() const { return compared_; }
+  std::optional<TraceDivergence> divergence_;
+
+ private:
+  TraceReader& reader_;
+  std::uint64_t compared_ = 0;
+};
+
+std::string header_value(const TraceHeader& h, const std::string& key) {
+  for (const auto& [k, v] : h.entries) {
+    if (k == key) return v;
+  }
+  return {};
+}
+}  // namespace
+
+TraceHeader trace_header_for(const Scenario& scenario, const std::filesystem::path& scenario_dir) {
+  TraceHeader header;
+  header.seed = scenario.seed.value_or(0);
+  const std::string json = scenario.json.dump();
+  header.scenario_hash = fnv1a64(json);
+  header.entries = {{"scenario", json},
+                    {"scenario_dir", std::filesystem::absolute(scenario_dir).string()}};
+  return header;
+}
+
+ReplayReport replay_trace(const std::filesystem::path& trace) {
+  TraceReader reader(trace);
+  const std::string embedded = header_value(reader.header(), "scenario");
+  if (embedded.empty()) {
+    throw ScenarioError(trace.string() +
+                        ": the trace carries no scenario (write one with covsim run --trace)");
+  }
+  nlohmann::json json;
+  try {
+    json = nlohmann::json::parse(embedded);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw ScenarioError(trace.string() + ": the embedded scenario is not valid JSON: " + e.what());
+  }
+  const Scenario scenario = parse_scenario(json, trace.string() + " (embedded scenario)",
+                                           header_value(reader.header(), "scenario_dir"));
+  TraceComparer comparer(reader);
+  ReplayReport report;
+  try {
+    const CoverageOutcome out = run_coverage(scenario, nullptr, &comparer);
+    report.fingerprint = out.fingerprint;
+    // The replay ended: so must the trace.
+    if (std::optional<TraceRecord> extra = reader.next()) {
+      report.divergence = TraceDivergence{extra->index, std::move(extra), std::nullopt};
+    }
+  } catch (const TraceComparer::Diverged&) {
+    report.divergence = comparer.divergence_;
+  }
+  report.events = comparer.compared();
+  report.matches = !report.divergence;
+  return report;
+}
+
+}  // namespace covsim
