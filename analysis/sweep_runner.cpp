@@ -130,6 +130,23 @@ double metric_value(const SweepResult& r, const std::string& metric) {
 std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
                                    const SweepOptions& options) {
   fs::create_directories(dir / "runs");
+  // The folder remembers its sweep, so a resume cannot mix two sweeps' results.
+  const nlohmann::json resolved = to_json(spec);
+  if (std::ifstream in(dir / "sweep.json"); in) {
+    nlohmann::json held;
+    try {
+      held = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error&) {
+    }
+    if (held != resolved) {
+      throw std::runtime_error(dir.string() +
+                               " holds results of a different sweep; use another output folder");
+    }
+  } else {
+    AtomicFile f(dir / "sweep.json");
+    f.stream() << resolved.dump() << '\n';
+    f.commit();
+  }
   std::vector<SweepRun> all = spec.runs();
   std::vector<SweepRun> mine;
   for (const SweepRun& r : all) {
@@ -187,6 +204,60 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
   for (auto& t : threads)
     t.join();
   if (options.progress && tty) fmt::print(stderr, "\n");
+  return results;
+}
+
+std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const fs::path& out,
+                                      SweepSpec& merged) {
+  if (dirs.empty()) throw std::runtime_error("nothing to merge");
+  nlohmann::json resolved;
+  for (const fs::path& d : dirs) {
+    std::ifstream in(d / "sweep.json");
+    if (!in) throw std::runtime_error(d.string() + ": not a sweep folder (no sweep.json)");
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw std::runtime_error(d.string() + "/sweep.json: " + e.what());
+    }
+    if (resolved.is_null()) resolved = j;
+    if (j != resolved)
+      throw std::runtime_error(d.string() + " holds a different sweep from " +
+                               dirs.front().string());
+  }
+  merged = sweep_from_json(resolved);
+  const std::size_t total = merged.runs().size();
+  std::vector<std::optional<SweepResult>> found(total);
+  for (const fs::path& d : dirs) {
+    for (std::size_t i = 0; i < total; ++i) {
+      if (found[i]) continue;
+      if (auto r = from_json(d / "runs" / fmt::format("{}.json", i)); r && r->index == i)
+        found[i] = *r;
+    }
+  }
+  std::vector<SweepResult> results;
+  std::size_t missing = 0;
+  for (const auto& r : found) {
+    if (r)
+      results.push_back(*r);
+    else
+      ++missing;
+  }
+  if (missing > 0)
+    throw std::runtime_error(
+        fmt::format("{} of {} runs are in none of the folders", missing, total));
+  fs::create_directories(out / "runs");
+  for (const SweepResult& r : results) {
+    AtomicFile f(out / "runs" / fmt::format("{}.json", r.index));
+    f.stream() << to_json(r).dump() << '\n';
+    f.commit();
+  }
+  AtomicFile spec_file(out / "sweep.json");
+  spec_file.stream() << resolved.dump() << '\n';
+  spec_file.commit();
+  write_runs_csv(out / "runs.csv", merged, results);
+  write_summary_csv(out / "summary.csv", merged, results);
+  write_sweep_plots(out, merged, results);
   return results;
 }
 

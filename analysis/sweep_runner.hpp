@@ -30,8 +30,15 @@ struct SweepOptions {
   std::size_t shards = 1;
 };
 
+// Throws std::runtime_error if DIR already holds a different sweep.
 std::vector<SweepResult> run_sweep(const SweepSpec& spec, const std::filesystem::path& dir,
                                    const SweepOptions& options);
+
+// Combines the results of sweep folders (shards of one sweep) into `out`: its runs/,
+// sweep.json, runs.csv, summary.csv and plots, as one sweep of the whole would give.
+// Throws std::runtime_error if the folders hold different sweeps or runs are missing.
+std::vector<SweepResult> merge_sweeps(const std::vector<std::filesystem::path>& dirs,
+                                      const std::filesystem::path& out, SweepSpec& merged_spec);
 
 // The metrics summarised per setting, in this order, as they appear in summary.csv.
 const std::vector<std::string>& sweep_metrics();

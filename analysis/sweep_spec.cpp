@@ -114,6 +114,26 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
   return spec;
 }
 
+nlohmann::json to_json(const SweepSpec& spec) {
+  return nlohmann::json{{"source", spec.source},
+                        {"scenario", spec.scenario},
+                        {"scenario_dir", spec.scenario_dir.string()},
+                        {"parameters", spec.parameters},
+                        {"settings", spec.settings},
+                        {"seeds", spec.seeds}};
+}
+
+SweepSpec sweep_from_json(const nlohmann::json& j) {
+  SweepSpec spec;
+  spec.source = j.at("source").get<std::string>();
+  spec.scenario = j.at("scenario");
+  spec.scenario_dir = j.at("scenario_dir").get<std::string>();
+  spec.parameters = j.at("parameters").get<std::vector<std::string>>();
+  spec.settings = j.at("settings").get<std::vector<std::vector<nlohmann::json>>>();
+  spec.seeds = j.at("seeds").get<std::vector<std::uint64_t>>();
+  return spec;
+}
+
 std::vector<SweepRun> SweepSpec::runs() const {
   std::vector<SweepRun> out;
   for (std::size_t s = 0; s < settings.size(); ++s) {

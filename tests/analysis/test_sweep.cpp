@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include <fstream>
+#include <sstream>
 
 #include "analysis/statistics.hpp"
 #include "analysis/sweep_runner.hpp"
@@ -140,4 +141,59 @@ TEST_CASE("sweep files are validated", "[sweep]") {
   error("{" + scenario + R"(, "seeds": {"count": 0}})", "$.seeds.count: expected a count");
   error("{" + scenario + "}", "missing required key \"seeds\"");
   error(R"({"scenario": 3, "seeds": [1]})", "$.scenario: expected a scenario file name");
+}
+
+TEST_CASE("shards plus merge equal the whole sweep", "[sweep]") {
+  const fs::path dir = temp_dir("merge");
+  const SweepSpec spec = load_sweep(write_sweep(dir, kSweep));
+  const auto whole = run_sweep(spec, dir / "whole", SweepOptions{2, false, 0, 1});
+  write_runs_csv(dir / "whole" / "runs.csv", spec, whole);
+  write_summary_csv(dir / "whole" / "summary.csv", spec, whole);
+  std::vector<fs::path> shards;
+  for (std::size_t k = 0; k < 4; ++k) {
+    shards.push_back(dir / fmt::format("shard{}", k));
+    run_sweep(spec, shards.back(), SweepOptions{1, false, k, 4});
+  }
+  SweepSpec merged_spec;
+  const auto merged = merge_sweeps(shards, dir / "merged", merged_spec);
+  CHECK(comparable(merged) == comparable(whole));
+  CHECK(merged_spec.parameters == spec.parameters);
+  // The files agree but for wall times.
+  auto without_wall_time = [](const fs::path& file) {
+    std::ifstream in(file);
+    std::vector<std::string> rows;
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    std::stringstream hs(line);
+    for (std::string f; std::getline(hs, f, ',');)
+      header.push_back(f);
+    while (std::getline(in, line)) {
+      std::stringstream ls(line);
+      std::string kept;
+      std::size_t c = 0;
+      for (std::string f; std::getline(ls, f, ','); ++c) {
+        if (c < header.size() && header[c].rfind("wall_time", 0) == 0) continue;
+        kept += f + ",";
+      }
+      rows.push_back(kept);
+    }
+    return rows;
+  };
+  CHECK(without_wall_time(dir / "merged" / "runs.csv") ==
+        without_wall_time(dir / "whole" / "runs.csv"));
+  CHECK(without_wall_time(dir / "merged" / "summary.csv") ==
+        without_wall_time(dir / "whole" / "summary.csv"));
+  // Missing shards, and folders of different sweeps, are refused.
+  SweepSpec unused;
+  CHECK_THROWS_WITH(merge_sweeps({shards[0], shards[1]}, dir / "partial", unused),
+                    Catch::Contains("in none of the folders"));
+  const SweepSpec other =
+      load_sweep(write_sweep(dir, R"({"scenario": ")" + std::string(COVSIM_SOURCE_DIR) +
+                                      R"(/scenarios/fig2c.json", "seeds": [1]})"));
+  run_sweep(other, dir / "other", SweepOptions{1, false, 0, 1});
+  CHECK_THROWS_WITH(merge_sweeps({shards[0], dir / "other"}, dir / "mixed", unused),
+                    Catch::Contains("different sweep"));
+  CHECK_THROWS_WITH(run_sweep(other, shards[0], SweepOptions{1, false, 0, 1}),
+                    Catch::Contains("different sweep"));
 }

@@ -1,0 +1,38 @@
+// `covsim merge DIR... --out DIR`: combines the folders of a sweep's shards into the
+// runs.csv, summary.csv and plots a single run of the whole sweep gives.
+#include <fmt/format.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/sweep_runner.hpp"
+#include "apps/commands.hpp"
+#include "apps/input_error.hpp"
+
+namespace covsim::app {
+
+void add_merge_command(CLI::App& app) {
+  struct Options {
+    std::vector<std::string> dirs;
+    std::string out;
+  };
+  auto opts = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("merge", "Combine the output folders of a sweep's shards");
+  cmd->add_option("DIR", opts->dirs, "Output folders of covsim sweep --shard")->required();
+  cmd->add_option("--out", opts->out, "Folder for the combined results")->required();
+  cmd->callback([opts] {
+    std::vector<std::filesystem::path> dirs(opts->dirs.begin(), opts->dirs.end());
+    SweepSpec spec;
+    std::vector<SweepResult> results;
+    try {
+      results = merge_sweeps(dirs, opts->out, spec);
+    } catch (const std::runtime_error& e) {
+      throw InputError(e.what());
+    }
+    fmt::print("merged {} runs from {} folders into {}/runs.csv and {}/summary.csv\n",
+               results.size(), dirs.size(), opts->out, opts->out);
+  });
+}
+
+}  // namespace covsim::app
