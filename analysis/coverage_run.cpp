@@ -5,6 +5,39 @@
 
 namespace covsim {
 
+namespace {
+// Samples the real cost for the convergence measures and passes everything on.
+class CostSampler final : public CoverageObserver {
+ public:
+  explicit CostSampler(CoverageObserver* next) : next_(next) {}
+  void on_motion(SimTime t, const Robot& r) override {
+    if (next_ != nullptr) next_->on_motion(t, r);
+  }
+  void on_sample(SimTime t, CoverageController& c) override {
+    series.emplace_back(t.seconds(), c.real_partition().cost());
+    if (next_ != nullptr) next_->on_sample(t, c);
+  }
+  void on_finish(SimTime t, CoverageController& c) override {
+    if (series.empty() || series.back().first < t.seconds())
+      series.emplace_back(t.seconds(), c.real_partition().cost());
+    if (next_ != nullptr) next_->on_finish(t, c);
+  }
+  std::vector<std::pair<double, double>> series;
+
+ private:
+  CoverageObserver* next_;
+};
+}  // namespace
+
+double settling_time(const std::vector<std::pair<double, double>>& series, double fraction) {
+  if (series.empty()) return 0.0;
+  const double limit = (1.0 + fraction) * series.back().second;
+  double t = series.back().first;
+  for (auto it = series.rbegin(); it != series.rend() && it->second <= limit; ++it)
+    t = it->first;
+  return t;
+}
+
 CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observer,
                              TraceSink* trace) {
   if (scenario.robot_positions.empty()) {
@@ -18,10 +51,11 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
   if (trace != nullptr) kernel.attach_trace(trace);
   CoverageController controller(kernel, *scenario.environment, *scenario.density,
                                 scenario.robot_positions, scenario.coverage);
-  controller.set_observer(observer);
+  CostSampler sampler(observer);
+  controller.set_observer(&sampler);
   controller.start();
   kernel.run_until(scenario.coverage.max_time);
-  if (observer != nullptr) observer->on_finish(kernel.now(), controller);
+  sampler.on_finish(kernel.now(), controller);
 
   CoverageOutcome out;
   out.converged = controller.converged();
@@ -42,6 +76,11 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
   out.decentralized = controller.decentralized();
   out.network = controller.network_totals();
   out.fingerprint = kernel.fingerprint().value();
+  out.time_to_10_percent = settling_time(sampler.series, 0.10);
+  out.time_to_5_percent = settling_time(sampler.series, 0.05);
+  out.time_to_1_percent = settling_time(sampler.series, 0.01);
+  for (const RobotOutcome& r : out.robots)
+    out.path_length += r.path_length;
   return out;
 }
 

@@ -33,7 +33,15 @@ struct CoverageOutcome {
   double cost_virtual = 0.0, cost_real = 0.0, cost_real_in_virtual_partition = 0.0;
   bool decentralized = false;  // false: the ideal network, every robot knows every state
   NetworkTotals network;
+  // Convergence measures: the time from which the real cost stays within 10%, 5% and 1% of
+  // its final value (sampled every metrics period), and the robots' total path length.
+  double time_to_10_percent = 0.0, time_to_5_percent = 0.0, time_to_1_percent = 0.0;
+  double path_length = 0.0;
 };
+
+// The first sample time from which every later value stays within (1 + fraction) of the last
+// value: how long a cost series took to settle. 0 for an empty series.
+double settling_time(const std::vector<std::pair<double, double>>& series, double fraction);
 
 // Throws ScenarioError if the scenario has no robots or no seed.
 CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observer = nullptr,

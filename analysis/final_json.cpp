@@ -33,6 +33,12 @@ std::string final_json(const CoverageOutcome& o) {
   net["messages_lost"] = o.network.lost;
   net["messages_unreachable"] = o.network.unreachable;
   j["network"] = std::move(net);
+  nlohmann::ordered_json conv;
+  conv["time_to_10_percent"] = o.time_to_10_percent;
+  conv["time_to_5_percent"] = o.time_to_5_percent;
+  conv["time_to_1_percent"] = o.time_to_1_percent;
+  conv["path_length"] = o.path_length;
+  j["convergence"] = std::move(conv);
   j["stop_reason"] = o.stop_reason;
   j["events"] = o.events;
   j["seed"] = o.seed;

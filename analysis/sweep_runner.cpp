@@ -33,6 +33,9 @@ nlohmann::json to_json(const SweepResult& r) {
                    {"cost_real", r.cost_real},
                    {"cost_real_in_virtual_partition", r.cost_real_in_virtual_partition},
                    {"path_length", r.path_length},
+                   {"time_to_10_percent", r.time_to_10_percent},
+                   {"time_to_5_percent", r.time_to_5_percent},
+                   {"time_to_1_percent", r.time_to_1_percent},
                    {"messages_sent", r.messages_sent},
                    {"messages_lost", r.messages_lost},
                    {"events", r.events},
@@ -55,6 +58,9 @@ std::optional<SweepResult> from_json(const fs::path& file) {
     r.cost_real = j.at("cost_real").get<double>();
     r.cost_real_in_virtual_partition = j.at("cost_real_in_virtual_partition").get<double>();
     r.path_length = j.at("path_length").get<double>();
+    r.time_to_10_percent = j.at("time_to_10_percent").get<double>();
+    r.time_to_5_percent = j.at("time_to_5_percent").get<double>();
+    r.time_to_1_percent = j.at("time_to_1_percent").get<double>();
     r.messages_sent = j.at("messages_sent").get<std::uint64_t>();
     r.messages_lost = j.at("messages_lost").get<std::uint64_t>();
     r.events = j.at("events").get<std::uint64_t>();
@@ -81,8 +87,10 @@ SweepResult execute(const SweepSpec& spec, const SweepRun& run) {
     r.cost_virtual = o.cost_virtual;
     r.cost_real = o.cost_real;
     r.cost_real_in_virtual_partition = o.cost_real_in_virtual_partition;
-    for (const RobotOutcome& robot : o.robots)
-      r.path_length += robot.path_length;
+    r.path_length = o.path_length;
+    r.time_to_10_percent = o.time_to_10_percent;
+    r.time_to_5_percent = o.time_to_5_percent;
+    r.time_to_1_percent = o.time_to_1_percent;
     r.messages_sent = o.network.sent;
     r.messages_lost = o.network.lost;
     r.events = o.events;
@@ -111,8 +119,9 @@ std::string csv_field(const std::string& s) {
 
 const std::vector<std::string>& sweep_metrics() {
   static const std::vector<std::string> m{
-      "sim_time",    "cost_virtual",  "cost_real", "cost_real_in_virtual_partition",
-      "path_length", "messages_lost", "wall_time"};
+      "sim_time",      "cost_virtual",       "cost_real",         "cost_real_in_virtual_partition",
+      "path_length",   "time_to_10_percent", "time_to_5_percent", "time_to_1_percent",
+      "messages_lost", "wall_time"};
   return m;
 }
 
@@ -122,6 +131,9 @@ double metric_value(const SweepResult& r, const std::string& metric) {
   if (metric == "cost_real") return r.cost_real;
   if (metric == "cost_real_in_virtual_partition") return r.cost_real_in_virtual_partition;
   if (metric == "path_length") return r.path_length;
+  if (metric == "time_to_10_percent") return r.time_to_10_percent;
+  if (metric == "time_to_5_percent") return r.time_to_5_percent;
+  if (metric == "time_to_1_percent") return r.time_to_1_percent;
   if (metric == "messages_lost") return static_cast<double>(r.messages_lost);
   if (metric == "wall_time") return r.wall_time;
   return NAN;
@@ -270,16 +282,18 @@ void write_runs_csv(const fs::path& file, const SweepSpec& spec,
     out += "," + csv_field(p);
   out +=
       ",seed,converged,sim_time,cost_virtual,cost_real,cost_real_in_virtual_partition,path_length,"
-      "messages_sent,messages_lost,events,wall_time,fingerprint,error\n";
+      "time_to_10_percent,time_to_5_percent,time_to_1_percent,messages_sent,messages_lost,events,"
+      "wall_time,fingerprint,error\n";
   for (const SweepResult& r : results) {
     const SweepRun& run = runs.at(r.index);
     out += fmt::format("{},{}", r.index, run.setting);
     for (const auto& v : run.values)
       out += "," + csv_field(csv_value(v));
-    out += fmt::format(",{},{},{},{},{},{},{},{},{},{},{},{},{}\n", run.seed, r.converged ? 1 : 0,
-                       r.sim_time, r.cost_virtual, r.cost_real, r.cost_real_in_virtual_partition,
-                       r.path_length, r.messages_sent, r.messages_lost, r.events, r.wall_time,
-                       r.fingerprint, csv_field(r.error.value_or("")));
+    out += fmt::format(",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", run.seed,
+                       r.converged ? 1 : 0, r.sim_time, r.cost_virtual, r.cost_real,
+                       r.cost_real_in_virtual_partition, r.path_length, r.time_to_10_percent,
+                       r.time_to_5_percent, r.time_to_1_percent, r.messages_sent, r.messages_lost,
+                       r.events, r.wall_time, r.fingerprint, csv_field(r.error.value_or("")));
   }
   f.stream() << out;
   f.commit();

@@ -18,6 +18,7 @@ struct SweepResult {
   double sim_time = 0.0;
   double cost_virtual = 0.0, cost_real = 0.0, cost_real_in_virtual_partition = 0.0;
   double path_length = 0.0;
+  double time_to_10_percent = 0.0, time_to_5_percent = 0.0, time_to_1_percent = 0.0;
   std::uint64_t messages_sent = 0, messages_lost = 0, events = 0;
   double wall_time = 0.0;  // seconds; the one field that differs between machines and runs
   std::string fingerprint;

@@ -195,3 +195,23 @@ TEST_CASE("the paper's scenarios reproduce their golden fingerprints", "[coverag
     CHECK(Fingerprint::to_hex(run_coverage(paper(name)).fingerprint) == fingerprint);
   }
 }
+
+TEST_CASE("settling times of a cost series", "[coverage]") {
+  // Falls, overshoots once above 10%, then settles.
+  const std::vector<std::pair<double, double>> s{{0, 10.0}, {1, 5.0},  {2, 1.2}, {3, 1.05},
+                                                 {4, 1.15}, {5, 1.04}, {6, 1.0}};
+  CHECK(settling_time(s, 0.10) == 5.0);
+  CHECK(settling_time(s, 0.20) == 2.0);
+  CHECK(settling_time(s, 0.01) == 6.0);
+  CHECK(settling_time({}, 0.1) == 0.0);
+  // The measures of a real run are ordered and within its time.
+  const CoverageOutcome out = run_coverage(paper("u_shape.json"));
+  CHECK(out.time_to_10_percent <= out.time_to_5_percent);
+  CHECK(out.time_to_5_percent <= out.time_to_1_percent);
+  CHECK(out.time_to_1_percent <= out.sim_time.seconds());
+  CHECK(out.time_to_10_percent > 0.0);
+  double path = 0.0;
+  for (const auto& r : out.robots)
+    path += r.path_length;
+  CHECK(out.path_length == path);
+}
