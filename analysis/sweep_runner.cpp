@@ -269,7 +269,7 @@ std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const f
   spec_file.commit();
   write_runs_csv(out / "runs.csv", merged, results);
   write_summary_csv(out / "summary.csv", merged, results);
-  write_sweep_plots(out, merged, results);
+  write_sweep_plots(out, merged, results, "");
   return results;
 }
 
@@ -339,7 +339,15 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
 }
 
 std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& spec,
-                                        const std::vector<SweepResult>& results) {
+                                        const std::vector<SweepResult>& results,
+                                        const std::string& group) {
+  std::optional<std::size_t> group_index;
+  for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
+    if (spec.parameters[q] == group) group_index = q;
+  }
+  if (!group.empty() && !group_index) {
+    throw std::invalid_argument("--group: \"" + group + "\" is not a swept parameter");
+  }
   std::vector<fs::path> written;
   const std::vector<SweepRun> runs = spec.runs();
   // Parameters that take more than one value: only these name the lines.
@@ -356,17 +364,19 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
       numeric = numeric && s[p].is_number();
       if (numeric) values.insert(s[p].get<double>());
     }
-    if (!numeric || values.size() < 2) continue;
+    if (!numeric || values.size() < 2 || (group_index && *group_index == p)) continue;
     for (const std::string& metric : sweep_metrics()) {
       if (metric == "wall_time") continue;
-      // One line per combination of the other parameters; points at this parameter's values.
+      // One line per value of the grouping parameter (pooling the others), or else per
+      // combination of the other varying parameters; points at this parameter's values.
       std::map<std::string, std::map<double, std::vector<double>>> lines;
       for (const SweepResult& r : results) {
         if (r.error) continue;
         const SweepRun& run = runs.at(r.index);
         std::string label;
         for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
-          if (q != p && varies[q])
+          const bool names_line = group_index ? q == *group_index : varies[q];
+          if (q != p && names_line)
             label +=
                 (label.empty() ? "" : ", ") + spec.parameters[q] + " = " + csv_value(run.values[q]);
         }

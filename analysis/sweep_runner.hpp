@@ -50,9 +50,12 @@ void write_runs_csv(const std::filesystem::path& file, const SweepSpec& spec,
 void write_summary_csv(const std::filesystem::path& file, const SweepSpec& spec,
                        const std::vector<SweepResult>& results);
 // One SVG per (metric, numeric parameter): mean with a 95% confidence band, one line per
-// combination of the other parameters. Returns the files written.
+// value of `group` (a swept parameter; the others pooled), or without one, per combination
+// of the other varying parameters. Returns the files written. Throws std::invalid_argument
+// for a group that is not swept.
 std::vector<std::filesystem::path> write_sweep_plots(const std::filesystem::path& dir,
                                                      const SweepSpec& spec,
-                                                     const std::vector<SweepResult>& results);
+                                                     const std::vector<SweepResult>& results,
+                                                     const std::string& group = "");
 
 }  // namespace covsim

@@ -3,6 +3,7 @@
 // skip runs whose results exist. Exit code 1 if any run failed (each failure is recorded).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <thread>
@@ -19,6 +20,7 @@ void add_sweep_command(CLI::App& app) {
     std::string out;
     std::size_t jobs = std::max(1u, std::thread::hardware_concurrency());
     std::string shard = "0/1";
+    std::string group;
   };
   auto opts = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("sweep", "Run a parameter sweep over seeds");
@@ -27,6 +29,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--jobs", opts->jobs, "Runs at once (threads)")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
+  cmd->add_option("--group", opts->group, "Plot one line per value of this swept parameter");
   cmd->add_option("--shard", opts->shard, "Run only slice K of N (K in 0..N-1), for clusters")
       ->capture_default_str();
   cmd->callback([opts] {
@@ -37,12 +40,17 @@ void add_sweep_command(CLI::App& app) {
           fmt::format("--shard: expected K/N with 0 <= K < N, found \"{}\"", opts->shard));
     }
     const SweepSpec spec = load_sweep(opts->sweep);
+    if (!opts->group.empty() && std::find(spec.parameters.begin(), spec.parameters.end(),
+                                          opts->group) == spec.parameters.end()) {
+      throw InputError(
+          fmt::format("--group: \"{}\" is not a swept parameter of {}", opts->group, opts->sweep));
+    }
     const std::filesystem::path dir = opts->out;
     const std::vector<SweepResult> results =
         run_sweep(spec, dir, SweepOptions{opts->jobs, true, k, n});
     write_runs_csv(dir / "runs.csv", spec, results);
     write_summary_csv(dir / "summary.csv", spec, results);
-    const auto plots = write_sweep_plots(dir, spec, results);
+    const auto plots = write_sweep_plots(dir, spec, results, opts->group);
     std::size_t failed = 0, converged = 0;
     for (const SweepResult& r : results) {
       failed += r.error ? 1 : 0;

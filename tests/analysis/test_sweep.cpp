@@ -197,3 +197,28 @@ TEST_CASE("shards plus merge equal the whole sweep", "[sweep]") {
   CHECK_THROWS_WITH(run_sweep(other, shards[0], SweepOptions{1, false, 0, 1}),
                     Catch::Contains("different sweep"));
 }
+
+TEST_CASE("plots group their lines by a chosen parameter", "[sweep]") {
+  const fs::path dir = temp_dir("group");
+  const SweepSpec spec =
+      load_sweep(write_sweep(dir, R"({"scenario": ")" + std::string(COVSIM_SOURCE_DIR) +
+                                      R"(/scenarios/two_obstacles.json",
+      "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.0, 0.4],
+               "network.broadcast_period": [0.1, 0.5]}, "seeds": [1, 2]})"));
+  const auto results = run_sweep(spec, dir / "out", SweepOptions{2, false, 0, 1});
+  const auto grouped = write_sweep_plots(dir / "out", spec, results, "network.broadcast_period");
+  // Plots against p only (the grouping parameter is never an x axis), one line per period.
+  CHECK_FALSE(grouped.empty());
+  for (const fs::path& f : grouped) {
+    CHECK_THAT(f.filename().string(), Catch::EndsWith("_vs_network.loss.p.svg"));
+    std::ifstream in(f);
+    const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK_THAT(svg, Catch::Contains("network.broadcast_period = 0.1<"));
+    CHECK_THAT(svg, Catch::Contains("network.broadcast_period = 0.5<"));
+  }
+  // Without a group, plots exist against both parameters.
+  const auto all = write_sweep_plots(dir / "out", spec, results);
+  CHECK(all.size() == 2 * grouped.size());
+  CHECK_THROWS_WITH(write_sweep_plots(dir / "out", spec, results, "planner.type"),
+                    Catch::Contains("not a swept parameter"));
+}
