@@ -95,12 +95,6 @@ std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
   return p;
 }
 
-std::optional<SimTime> EventQueue::next_time() {
-  drop_cancelled_top();
-  if (heap_size() == 0) return std::nullopt;
-  return SimTime::from_ns(at(0).time);
-}
-
 void EventQueue::fill_hole() {
   if (!hole_at_root_) return;
   hole_at_root_ = false;

@@ -42,7 +42,6 @@ class EventQueue {
   };
   // Removes and returns the earliest pending event if it is not after `not_after`.
   std::optional<Popped> pop(SimTime not_after = SimTime::max());
-  std::optional<SimTime> next_time();
   std::size_t size() const { return live_; }
   bool empty() const { return live_ == 0; }
 

@@ -47,7 +47,6 @@ class Kernel {
   // Registers an event kind. Its name must be unique: the fingerprint and the trace use
   // the name, not the number, so the order of registration never changes a result.
   EventKind add_kind(std::string_view name, Handler handler);
-  const std::string& kind_name(EventKind kind) const { return kinds_.at(kind).name; }
 
   // Schedules a one-shot event. t must not be in the past.
   EventHandle schedule_at(SimTime t, EventKind kind, EntityId entity, Priority priority = 0,
@@ -86,7 +85,6 @@ class Kernel {
   std::uint64_t seed() const { return seed_; }
   std::uint64_t events_dispatched() const { return dispatched_; }
   std::size_t pending() const { return queue_.size(); }
-  std::optional<SimTime> next_time() { return queue_.next_time(); }
 
   Fingerprint& fingerprint() { return fingerprint_; }
   const Fingerprint& fingerprint() const { return fingerprint_; }

@@ -133,8 +133,12 @@ const VoronoiPartition& CoverageController::virtual_partition() {
   return *virtual_partition_;
 }
 
-VoronoiPartition CoverageController::real_partition() const {
-  return VoronoiPartition(integrator_, positions(), VoronoiPartition::Coincident::share);
+const VoronoiPartition& CoverageController::real_partition() {
+  if (!real_partition_) {
+    real_partition_ = std::make_unique<VoronoiPartition>(integrator_, positions(),
+                                                         VoronoiPartition::Coincident::share);
+  }
+  return *real_partition_;
 }
 
 CellSummary CoverageController::own_cell(std::uint32_t i, ConvexPolygon* cell) {
@@ -293,6 +297,7 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
                       k.now().seconds(), r.position.x, r.position.y, next.x, next.y));
     }
     r.path_length += distance(r.position, next);
+    if (!(next == r.position)) real_partition_.reset();
     r.position = next;
     r.status = s.status;
     r.stable = false;

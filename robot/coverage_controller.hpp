@@ -75,8 +75,9 @@ class CoverageController {
   std::vector<Vec2> virtual_generators() const;
   // The partition of the virtual generators as they are now (cached until one moves).
   const VoronoiPartition& virtual_partition();
-  // The partition of the real positions (robots at the same place share one cell).
-  VoronoiPartition real_partition() const;
+  // The partition of the real positions (robots at the same place share one cell), cached
+  // until a robot moves.
+  const VoronoiPartition& real_partition();
 
   bool decentralized() const { return channel_ != nullptr; }
   const NetworkTotals& network_totals() const { return totals_; }
@@ -100,7 +101,7 @@ class CoverageController {
   double position_tol_, virtual_tol_, step_;
   std::vector<Robot> robots_;
   CoverageObserver* observer_ = nullptr;
-  std::unique_ptr<VoronoiPartition> virtual_partition_;
+  std::unique_ptr<VoronoiPartition> virtual_partition_, real_partition_;
   EventKind loop1_kind_ = 0, loop2_kind_ = 0, sample_kind_ = 0, check_kind_ = 0;
   EventKind broadcast_kind_ = 0, deliver_kind_ = 0, sense_kind_ = 0;
   std::vector<RandomStream> noise_rng_, dropout_rng_;

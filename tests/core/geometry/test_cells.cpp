@@ -5,13 +5,12 @@
 #include "core/geometry/geometry_error.hpp"
 #include "core/geometry/voronoi_partition.hpp"
 #include "core/random_stream.hpp"
+#include "tests/core/geometry/shapes.hpp"
 
 using namespace covsim;
+using covsim::test::square;
 
 namespace {
-std::vector<Vec2> square(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
 
 struct World {
   Environment env;

@@ -8,14 +8,13 @@
 
 #include "core/geometry/quadrature.hpp"
 #include "core/geometry/voronoi_partition.hpp"
+#include "tests/core/geometry/shapes.hpp"
 
 using namespace covsim;
+using covsim::test::square;
 namespace fs = std::filesystem;
 
 namespace {
-std::vector<Vec2> square(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
 
 // ∫_a^b exp(-(x-mu)²/(2 s²)) dx and ∫_a^b x exp(...) dx, in closed form.
 double g0(double a, double b, double mu, double s) {

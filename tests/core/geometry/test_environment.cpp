@@ -6,14 +6,13 @@
 
 #include "core/geometry/environment.hpp"
 #include "core/geometry/geometry_error.hpp"
+#include "tests/core/geometry/shapes.hpp"
 
 using namespace covsim;
 using Catch::Matchers::Contains;
+using covsim::test::square;
 
 namespace {
-std::vector<Vec2> square(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
 
 void expect_error(const std::vector<Vec2>& outer, const std::vector<std::vector<Vec2>>& holes,
                   const std::string& fragment) {

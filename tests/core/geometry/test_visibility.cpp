@@ -3,13 +3,12 @@
 #include <cmath>
 
 #include "core/geometry/visibility.hpp"
+#include "tests/core/geometry/shapes.hpp"
 
 using namespace covsim;
+using covsim::test::square;
 
 namespace {
-std::vector<Vec2> square(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
 
 double total_length(const VisibleBoundary& v) {
   double s = 0;
