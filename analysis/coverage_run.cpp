@@ -1,5 +1,7 @@
 #include "analysis/coverage_run.hpp"
 
+#include <algorithm>
+
 #include "core/trace.hpp"
 #include "scenarios/scenario_error.hpp"
 
@@ -60,12 +62,15 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
   CoverageOutcome out;
   out.converged = controller.converged();
   out.sim_time = kernel.now();
-  out.stop_reason = out.converged ? "converged" : "max_time";
+  out.stop_reason = out.converged ? "converged" : controller.stuck() ? "stuck" : "max_time";
   out.events = kernel.events_dispatched();
   out.seed = *scenario.seed;
+  const VoronoiPartition& last = controller.real_partition();
   for (const Robot& r : controller.robots()) {
     out.robots.push_back(RobotOutcome{r.position, r.virtual_generator, r.virtual_target,
-                                      r.real_target, r.projected, r.status, r.path_length});
+                                      r.real_target, r.projected, r.status, r.path_length,
+                                      r.target_outside_steps, r.stalled_time,
+                                      distance(r.position, last.summary(r.id).centroid)});
   }
   // Algorithm 1, line 8: the last partition, of the real positions.
   const VoronoiPartition& virtual_partition = controller.virtual_partition();
@@ -79,8 +84,15 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
   out.time_to_10_percent = settling_time(sampler.series, 0.10);
   out.time_to_5_percent = settling_time(sampler.series, 0.05);
   out.time_to_1_percent = settling_time(sampler.series, 0.01);
-  for (const RobotOutcome& r : out.robots)
+  for (const RobotOutcome& r : out.robots) {
     out.path_length += r.path_length;
+    out.target_outside_steps += r.target_outside_steps;
+    out.stalled_time += r.stalled_time;
+    out.centroid_distance_mean += r.centroid_distance / static_cast<double>(out.robots.size());
+    out.centroid_distance_max = std::max(out.centroid_distance_max, r.centroid_distance);
+  }
+  out.planner_seconds = controller.planner_totals().seconds;
+  out.planner_steps = controller.planner_totals().steps;
   return out;
 }
 

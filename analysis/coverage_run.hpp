@@ -18,12 +18,17 @@ struct RobotOutcome {
   bool projected = false;
   PlanStatus status = PlanStatus::reached;
   double path_length = 0.0;
+  // Failure measures: loop-2 steps with the loop-1 target outside Ω, seconds stalled, and
+  // the final distance from the centroid of its cell in the last partition.
+  std::uint64_t target_outside_steps = 0;
+  double stalled_time = 0.0;
+  double centroid_distance = 0.0;
 };
 
 struct CoverageOutcome {
   bool converged = false;
   SimTime sim_time;
-  std::string stop_reason;  // "converged" or "max_time"
+  std::string stop_reason;  // "converged", "stuck" (see CoverageController::stuck) or "max_time"
   std::uint64_t events = 0;
   std::uint64_t seed = 0;
   std::uint64_t fingerprint = 0;
@@ -37,6 +42,14 @@ struct CoverageOutcome {
   // its final value (sampled every metrics period), and the robots' total path length.
   double time_to_10_percent = 0.0, time_to_5_percent = 0.0, time_to_1_percent = 0.0;
   double path_length = 0.0;
+  // Sums and means of the robots' failure measures.
+  std::uint64_t target_outside_steps = 0;
+  double stalled_time = 0.0;
+  double centroid_distance_mean = 0.0, centroid_distance_max = 0.0;
+  // Wall-clock seconds spent in planner steps, and how many steps: the only measures besides
+  // wall times that vary between runs.
+  double planner_seconds = 0.0;
+  std::uint64_t planner_steps = 0;
 };
 
 // The first sample time from which every later value stays within (1 + fraction) of the last

@@ -20,6 +20,9 @@ std::string final_json(const CoverageOutcome& o) {
     robot["projected"] = r.projected;
     robot["status"] = std::string(to_string(r.status));
     robot["path_length"] = r.path_length;
+    robot["target_outside_steps"] = r.target_outside_steps;
+    robot["stalled_time"] = r.stalled_time;
+    robot["centroid_distance"] = r.centroid_distance;
     j["robots"].push_back(std::move(robot));
   }
   j["cost"] = {{"virtual", o.cost_virtual},
@@ -39,6 +42,17 @@ std::string final_json(const CoverageOutcome& o) {
   conv["time_to_1_percent"] = o.time_to_1_percent;
   conv["path_length"] = o.path_length;
   j["convergence"] = std::move(conv);
+  nlohmann::ordered_json fail;
+  fail["target_outside_steps"] = o.target_outside_steps;
+  fail["stalled_time"] = o.stalled_time;
+  fail["centroid_distance_mean"] = o.centroid_distance_mean;
+  fail["centroid_distance_max"] = o.centroid_distance_max;
+  j["failures"] = std::move(fail);
+  nlohmann::ordered_json planner;
+  planner["steps"] = o.planner_steps;
+  planner["step_time_us"] =
+      o.planner_steps > 0 ? 1e6 * o.planner_seconds / static_cast<double>(o.planner_steps) : 0.0;
+  j["planner"] = std::move(planner);
   j["stop_reason"] = o.stop_reason;
   j["events"] = o.events;
   j["seed"] = o.seed;

@@ -39,6 +39,11 @@ nlohmann::json to_json(const SweepResult& r) {
                    {"messages_sent", r.messages_sent},
                    {"messages_lost", r.messages_lost},
                    {"events", r.events},
+                   {"stop_reason", r.stop_reason},
+                   {"target_outside_steps", r.target_outside_steps},
+                   {"stalled_time", r.stalled_time},
+                   {"centroid_distance", r.centroid_distance},
+                   {"planner_step_time", r.planner_step_time},
                    {"wall_time", r.wall_time},
                    {"fingerprint", r.fingerprint}};
   if (r.error) j["error"] = *r.error;
@@ -64,6 +69,11 @@ std::optional<SweepResult> from_json(const fs::path& file) {
     r.messages_sent = j.at("messages_sent").get<std::uint64_t>();
     r.messages_lost = j.at("messages_lost").get<std::uint64_t>();
     r.events = j.at("events").get<std::uint64_t>();
+    r.stop_reason = j.at("stop_reason").get<std::string>();
+    r.target_outside_steps = j.at("target_outside_steps").get<double>();
+    r.stalled_time = j.at("stalled_time").get<double>();
+    r.centroid_distance = j.at("centroid_distance").get<double>();
+    r.planner_step_time = j.at("planner_step_time").get<double>();
     r.wall_time = j.at("wall_time").get<double>();
     r.fingerprint = j.at("fingerprint").get<std::string>();
     if (j.contains("error")) r.error = j.at("error").get<std::string>();
@@ -94,6 +104,12 @@ SweepResult execute(const SweepSpec& spec, const SweepRun& run) {
     r.messages_sent = o.network.sent;
     r.messages_lost = o.network.lost;
     r.events = o.events;
+    r.stop_reason = o.stop_reason;
+    r.target_outside_steps = static_cast<double>(o.target_outside_steps);
+    r.stalled_time = o.stalled_time;
+    r.centroid_distance = o.centroid_distance_mean;
+    r.planner_step_time =
+        o.planner_steps > 0 ? 1e6 * o.planner_seconds / static_cast<double>(o.planner_steps) : 0.0;
     r.fingerprint = Fingerprint::to_hex(o.fingerprint);
   } catch (const std::exception& e) {
     r.error = e.what();
@@ -118,10 +134,13 @@ std::string csv_field(const std::string& s) {
 }  // namespace
 
 const std::vector<std::string>& sweep_metrics() {
-  static const std::vector<std::string> m{
-      "sim_time",      "cost_virtual",       "cost_real",         "cost_real_in_virtual_partition",
-      "path_length",   "time_to_10_percent", "time_to_5_percent", "time_to_1_percent",
-      "messages_lost", "wall_time"};
+  static const std::vector<std::string> m{"sim_time",          "cost_virtual",
+                                          "cost_real",         "cost_real_in_virtual_partition",
+                                          "path_length",       "time_to_10_percent",
+                                          "time_to_5_percent", "time_to_1_percent",
+                                          "messages_lost",     "target_outside_steps",
+                                          "stalled_time",      "centroid_distance",
+                                          "planner_step_time", "wall_time"};
   return m;
 }
 
@@ -135,6 +154,10 @@ double metric_value(const SweepResult& r, const std::string& metric) {
   if (metric == "time_to_5_percent") return r.time_to_5_percent;
   if (metric == "time_to_1_percent") return r.time_to_1_percent;
   if (metric == "messages_lost") return static_cast<double>(r.messages_lost);
+  if (metric == "target_outside_steps") return r.target_outside_steps;
+  if (metric == "stalled_time") return r.stalled_time;
+  if (metric == "centroid_distance") return r.centroid_distance;
+  if (metric == "planner_step_time") return r.planner_step_time;
   if (metric == "wall_time") return r.wall_time;
   return NAN;
 }
@@ -283,17 +306,20 @@ void write_runs_csv(const fs::path& file, const SweepSpec& spec,
   out +=
       ",seed,converged,sim_time,cost_virtual,cost_real,cost_real_in_virtual_partition,path_length,"
       "time_to_10_percent,time_to_5_percent,time_to_1_percent,messages_sent,messages_lost,events,"
+      "stop_reason,target_outside_steps,stalled_time,centroid_distance,planner_step_time,"
       "wall_time,fingerprint,error\n";
   for (const SweepResult& r : results) {
     const SweepRun& run = runs.at(r.index);
     out += fmt::format("{},{}", r.index, run.setting);
     for (const auto& v : run.values)
       out += "," + csv_field(csv_value(v));
-    out += fmt::format(",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", run.seed,
-                       r.converged ? 1 : 0, r.sim_time, r.cost_virtual, r.cost_real,
+    out += fmt::format(",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+                       run.seed, r.converged ? 1 : 0, r.sim_time, r.cost_virtual, r.cost_real,
                        r.cost_real_in_virtual_partition, r.path_length, r.time_to_10_percent,
                        r.time_to_5_percent, r.time_to_1_percent, r.messages_sent, r.messages_lost,
-                       r.events, r.wall_time, r.fingerprint, csv_field(r.error.value_or("")));
+                       r.events, r.stop_reason, r.target_outside_steps, r.stalled_time,
+                       r.centroid_distance, r.planner_step_time, r.wall_time, r.fingerprint,
+                       csv_field(r.error.value_or("")));
   }
   f.stream() << out;
   f.commit();

@@ -20,7 +20,11 @@ struct SweepResult {
   double path_length = 0.0;
   double time_to_10_percent = 0.0, time_to_5_percent = 0.0, time_to_1_percent = 0.0;
   std::uint64_t messages_sent = 0, messages_lost = 0, events = 0;
-  double wall_time = 0.0;  // seconds; the one field that differs between machines and runs
+  std::string stop_reason;  // converged, stuck or max_time
+  double target_outside_steps = 0.0, stalled_time = 0.0, centroid_distance = 0.0;
+  // Seconds; with planner_step_time (microseconds per planner step), the fields that differ
+  // between machines and runs.
+  double wall_time = 0.0, planner_step_time = 0.0;
   std::string fingerprint;
 };
 

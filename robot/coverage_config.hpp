@@ -3,9 +3,11 @@
 // scenario file gets when it leaves them out.
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "core/sim_time.hpp"
 #include "net/channel.hpp"
+#include "planners/planner_factory.hpp"
 
 namespace covsim {
 
@@ -23,7 +25,27 @@ struct NetworkConfig {
   std::optional<SimTime> staleness;  // entries older than this are dropped; unset: never
 };
 
+// Which targets loop 1 hands the planners.
+enum class ControllerKind {
+  virtual_generators,  // the paper's: Lloyd on virtual generators, targets projected onto Ω
+  euclidean_lloyd,     // Lloyd on the real positions; each robot drives at its centroid
+  geodesic_lloyd,      // cells and gradient step under the geodesic distance in Ω
+};
+std::string_view to_string(ControllerKind k);
+
+struct ControllerConfig {
+  ControllerKind kind = ControllerKind::virtual_generators;
+  // geodesic_lloyd: the spacing of the integration lattice (unset: 1/100 of the diameter of
+  // Ω's bounding box).
+  std::optional<double> resolution;
+  // geodesic_lloyd: the step toward the geodesic Lloyd point T, target = p + gain (T - p).
+  // Under the geodesic distance a full step (gain 1) overshoots near obstacles' corners,
+  // where the directions to the points behind them turn quickly, and can oscillate forever.
+  double gain = 0.25;
+};
+
 struct CoverageConfig {
+  ControllerConfig controller;
   LoopMode mode = LoopMode::classic;
   SimTime loop2_period = SimTime::from_ns(100'000'000);    // 0.1 s: one motion step
   SimTime loop1_period = SimTime::from_ns(1'000'000'000);  // periodic mode only
@@ -35,7 +57,7 @@ struct CoverageConfig {
   std::optional<SimTime> sensor_period;
   double sensor_noise_sigma = 0.0;
   double sensor_dropout = 0.0;
-  std::string planner = "tangent_bug";
+  PlannerConfig planner;
   // Convergence: every robot settled at its real target (within position_tolerance) and
   // every virtual generator within virtual_tolerance of its virtual target. Unset: 1e-3
   // of the diameter of Ω's bounding box.

@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 #include "core/geometry/delaunay.hpp"
-#include "planners/planner_factory.hpp"
 
 namespace covsim {
 
@@ -17,19 +17,41 @@ constexpr Priority kLoop1 = 0, kSense = 1, kLoop2 = 2, kBroadcast = 3, kDeliver 
 constexpr EntityId kWorld = UINT32_MAX;  // the entity of events that concern every robot
 }  // namespace
 
+std::string_view to_string(ControllerKind k) {
+  switch (k) {
+    case ControllerKind::virtual_generators:
+      return "virtual_generators";
+    case ControllerKind::euclidean_lloyd:
+      return "euclidean_lloyd";
+    case ControllerKind::geodesic_lloyd:
+      return "geodesic_lloyd";
+  }
+  return "unknown";
+}
+
 CoverageController::CoverageController(Kernel& kernel, const Environment& env,
                                        const Density& density, const std::vector<Vec2>& starts,
                                        CoverageConfig config)
-    : kernel_(kernel), env_(env), integrator_(env, density), config_(std::move(config)) {
+    : kernel_(kernel),
+      env_(env),
+      integrator_(env, density),
+      config_(std::move(config)),
+      planners_(env, config_.planner, SensorSpec{config_.sensor_noise_sigma}) {
   position_tol_ = config_.position_tolerance.value_or(1e-3 * env.diameter());
   virtual_tol_ = config_.virtual_tolerance.value_or(1e-3 * env.diameter());
   step_ = config_.max_speed * config_.loop2_period.seconds();
   for (std::uint32_t i = 0; i < starts.size(); ++i) {
     Robot r;
     r.id = i;
-    r.position = r.virtual_generator = r.virtual_target = r.real_target = r.goal = starts[i];
-    r.planner = make_planner(config_.planner, env, SensorSpec{config_.sensor_noise_sigma});
+    r.position = r.virtual_generator = r.virtual_target = r.real_target = r.goal = r.assigned =
+        starts[i];
+    r.planner = planners_.make();
     robots_.push_back(std::move(r));
+  }
+  if (config_.controller.kind == ControllerKind::geodesic_lloyd) {
+    graph_ = std::make_unique<VisibilityGraph>(env);
+    lattice_points_ = std::make_unique<GeodesicLattice>(
+        *graph_, density, config_.controller.resolution.value_or(env.diameter() / 100.0));
   }
   loop1_kind_ = kernel_.add_kind("loop1", [this](Kernel&, const Event& ev) { loop1(ev.entity); });
   loop2_kind_ =
@@ -141,6 +163,21 @@ const VoronoiPartition& CoverageController::real_partition() {
   return *real_partition_;
 }
 
+const GeodesicPartition& CoverageController::geodesic_partition() {
+  if (!geodesic_partition_)
+    geodesic_partition_ = std::make_unique<GeodesicPartition>(*lattice_points_, positions());
+  return *geodesic_partition_;
+}
+
+std::vector<Vec2> CoverageController::known_generators(std::uint32_t i, bool positions) const {
+  std::vector<Vec2> known{positions ? robots_[i].position : robots_[i].virtual_generator};
+  for (const auto& [sender, m] : tables_[i].entries()) {
+    const Vec2 g = positions ? m.position : m.virtual_generator;
+    if (std::find(known.begin(), known.end(), g) == known.end()) known.push_back(g);
+  }
+  return known;
+}
+
 CellSummary CoverageController::own_cell(std::uint32_t i, ConvexPolygon* cell) {
   const Vec2 g = robots_[i].virtual_generator;
   if (!channel_) {
@@ -150,11 +187,7 @@ CellSummary CoverageController::own_cell(std::uint32_t i, ConvexPolygon* cell) {
   }
   // Decentralized: the Delaunay neighbours among the generators robot i has heard of (its
   // own first, then by robot id; one that sits exactly on another is left out).
-  std::vector<Vec2> known{g};
-  for (const auto& [sender, m] : tables_[i].entries()) {
-    if (std::find(known.begin(), known.end(), m.virtual_generator) == known.end())
-      known.push_back(m.virtual_generator);
-  }
+  const std::vector<Vec2> known = known_generators(i, false);
   std::vector<Vec2> neighbors;
   if (known.size() > 1) {
     const DelaunayNeighbors nb = delaunay_neighbors(known);
@@ -257,22 +290,45 @@ void CoverageController::loop1(std::uint32_t i) {
   // of, and its centroid.
   if (channel_ && config_.network.staleness)
     tables_[i].drop_stale(kernel_.now(), *config_.network.staleness);
-  const CellSummary cell = own_cell(i);
+  const bool paper = config_.controller.kind == ControllerKind::virtual_generators;
   Robot& r = robots_[i];
-  r.virtual_target = cell.centroid;
+  r.virtual_target = paper ? own_cell(i).centroid : baseline_target(i);
   // Algorithm 2, lines 2-4: an obstacle boundary Voronoi region projects its target.
   r.projected = !env_.contains(r.virtual_target);
   r.real_target = r.projected ? env_.closest_point(r.virtual_target) : r.virtual_target;
-  r.stable = is_settled(r.status) &&
-             distance(r.virtual_target, r.virtual_generator) <= virtual_tol_ &&
-             distance(r.real_target, r.position) <= position_tol_;
+  r.stable = is_settled(r.status) && distance(r.real_target, r.position) <= position_tol_ &&
+             (!paper || distance(r.virtual_target, r.virtual_generator) <= virtual_tol_);
+  if (r.stable) return;
   // A target that moved less than the position tolerance does not restart the planner:
-  // otherwise periodic updates could keep a robot from ever getting round an obstacle.
-  if (!r.stable && (is_settled(r.status) || distance(r.virtual_target, r.goal) > position_tol_)) {
-    r.planner->set_goal(r.virtual_target);
-    r.goal = r.virtual_target;
-    r.status = PlanStatus::moving;
+  // otherwise periodic updates could keep a robot from ever getting round an obstacle. A
+  // robot stalled short of an unchanged target stays stalled: trying again would fail again.
+  const bool moved = distance(r.virtual_target, r.assigned) > position_tol_;
+  if (moved || (is_settled(r.status) && r.status != PlanStatus::stalled)) {
+    set_goal(r, r.virtual_target);
+    r.assigned = r.virtual_target;
   }
+}
+
+void CoverageController::set_goal(Robot& r, Vec2 goal) {
+  r.planner->set_goal(goal);
+  r.goal = goal;
+  r.status = PlanStatus::moving;
+}
+
+Vec2 CoverageController::baseline_target(std::uint32_t i) {
+  const bool geodesic = config_.controller.kind == ControllerKind::geodesic_lloyd;
+  if (geodesic) {
+    const Vec2 p = robots_[i].position;
+    const Vec2 t =
+        !channel_ ? geodesic_partition().cell(i).target
+                  : GeodesicPartition(*lattice_points_, known_generators(i, true)).cell(0).target;
+    return p + config_.controller.gain * (t - p);
+  }
+  if (!channel_) return real_partition().summary(i).centroid;
+  const std::vector<Vec2> known = known_generators(i, true);
+  return VoronoiPartition(integrator_, known, VoronoiPartition::Coincident::share)
+      .summary(0)
+      .centroid;
 }
 
 void CoverageController::loop2(Kernel& k, std::uint32_t i) {
@@ -280,16 +336,21 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
   if (!is_settled(r.status)) {
     // Algorithm 2, line 5: a planner step toward the real target, in the real world.
     PlanStep s;
+    SensorReading now;
     if (ideal_sensor()) {
-      s = r.planner->step(sense(env_, r.position, config_.sensor_range), step_);
+      now = sense(env_, r.position, config_.sensor_range);
     } else {
       // The latest range reading, with the robot's own position and its current contacts.
       if (!config_.sensor_period) take_reading(i);
-      SensorReading now = r.reading;
+      now = r.reading;
       now.position = r.position;
       now.contacts = contacts_at(env_, r.position);
-      s = r.planner->step(now, step_);
     }
+    const auto started = std::chrono::steady_clock::now();
+    s = r.planner->step(now, step_);
+    planner_totals_.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    ++planner_totals_.steps;
     const Vec2 next = env_.advance(r.position, s.next);
     if (!env_.segment_inside(r.position, next)) {
       throw std::logic_error(
@@ -297,16 +358,30 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
                       k.now().seconds(), r.position.x, r.position.y, next.x, next.y));
     }
     r.path_length += distance(r.position, next);
-    if (!(next == r.position)) real_partition_.reset();
+    if (!(next == r.position)) {
+      real_partition_.reset();
+      geodesic_partition_.reset();
+    }
     r.position = next;
     r.status = s.status;
     r.stable = false;
+    // A planner that gives up on a target outside Ω: the target is unreachable, so the
+    // robot goes to its projection instead.
+    if (r.status == PlanStatus::stalled && r.projected && !(r.goal == r.real_target))
+      set_goal(r, r.real_target);
   }
-  // Line 6: the virtual generator steps toward the virtual target as if Ω were convex.
-  const Vec2 d = r.virtual_target - r.virtual_generator;
-  const double dn = norm(d);
-  if (dn > 0.0) {
-    r.virtual_generator = dn <= step_ ? r.virtual_target : r.virtual_generator + (step_ / dn) * d;
+  if (r.projected) ++r.target_outside_steps;
+  if (r.status == PlanStatus::stalled) r.stalled_time += config_.loop2_period.seconds();
+  if (config_.controller.kind == ControllerKind::virtual_generators) {
+    // Line 6: the virtual generator steps toward the virtual target as if Ω were convex.
+    const Vec2 d = r.virtual_target - r.virtual_generator;
+    const double dn = norm(d);
+    if (dn > 0.0) {
+      r.virtual_generator = dn <= step_ ? r.virtual_target : r.virtual_generator + (step_ / dn) * d;
+      virtual_partition_.reset();
+    }
+  } else if (!(r.virtual_generator == r.position)) {
+    r.virtual_generator = r.position;  // the baselines have no virtual generators
     virtual_partition_.reset();
   }
   if (config_.mode == LoopMode::classic && is_settled(r.status)) {
@@ -322,11 +397,22 @@ void CoverageController::check(Kernel& k) {
     k.fingerprint().fold_state(r.virtual_generator.x);
     k.fingerprint().fold_state(r.virtual_generator.y);
   }
-  bool all_stable = true;
-  for (const Robot& r : robots_)
+  const bool paper = config_.controller.kind == ControllerKind::virtual_generators;
+  bool all_stable = true, all_resting = true;
+  for (const Robot& r : robots_) {
     all_stable = all_stable && r.stable;
+    // Stuck: stalled short of a target that has not moved, with (for the paper's
+    // controller) the virtual generator at rest on its target.
+    const bool stuck = r.status == PlanStatus::stalled &&
+                       distance(r.virtual_target, r.assigned) <= position_tol_ &&
+                       (!paper || distance(r.virtual_target, r.virtual_generator) <= virtual_tol_);
+    all_resting = all_resting && (r.stable || stuck);
+  }
   if (all_stable) {
     converged_ = true;
+    k.stop();
+  } else if (all_resting) {
+    stuck_ = true;
     k.stop();
   }
 }

@@ -15,10 +15,21 @@
 // mode loop 1 runs every loop1_period. Each tick ends with a check (class 3) that folds all
 // positions into the fingerprint and stops the run when every robot is stable.
 // A motion that would leave Ω is an internal error: it throws.
+//
+// The baseline controllers (ControllerKind) replace loop 1: euclidean_lloyd targets the
+// centroid of the robot's own cell among the real positions, geodesic_lloyd the geodesic
+// Lloyd step (GeodesicPartition); they have no virtual generators (virtual_generator
+// follows the position) and converge when every robot has reached its target or settled at
+// its projection. With any controller, a planner that stalls while its target lies outside
+// Ω is sent to the target's projection instead (the target is treated as unreachable). A
+// robot stalled with nothing left to change is stuck; when every robot is converged or
+// stuck, the run stops (stuck()).
+
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "core/geometry/geodesic_partition.hpp"
 #include "core/geometry/voronoi_partition.hpp"
 #include "core/kernel.hpp"
 #include "net/channel.hpp"
@@ -30,6 +41,12 @@
 namespace covsim {
 
 class CoverageController;
+
+// Wall-clock time spent in planner steps (varies between runs; never in the fingerprint).
+struct PlannerTotals {
+  double seconds = 0.0;
+  std::uint64_t steps = 0;
+};
 
 struct NetworkTotals {
   std::uint64_t sent = 0;  // link transmissions (one per receiver per broadcast)
@@ -65,6 +82,8 @@ class CoverageController {
   // Schedules loop 1 and loop 2 for every robot, the samples and the checks.
   void start();
   bool converged() const { return converged_; }
+  // The run stopped with robots stalled short of targets that no longer change.
+  bool stuck() const { return stuck_; }
 
   const std::vector<Robot>& robots() const { return robots_; }
   const CellIntegrator& integrator() const { return integrator_; }
@@ -78,9 +97,13 @@ class CoverageController {
   // The partition of the real positions (robots at the same place share one cell), cached
   // until a robot moves.
   const VoronoiPartition& real_partition();
+  // geodesic_lloyd only: the geodesic partition of the real positions, cached until a
+  // robot moves.
+  const GeodesicPartition& geodesic_partition();
 
   bool decentralized() const { return channel_ != nullptr; }
   const NetworkTotals& network_totals() const { return totals_; }
+  const PlannerTotals& planner_totals() const { return planner_totals_; }
   NetworkSample network_sample();
   // Robot i's own cell and its summary as the robot computes them: among the virtual
   // generators it knows (all of them, centralized; its table's, decentralized).
@@ -88,6 +111,12 @@ class CoverageController {
 
  private:
   void loop1(std::uint32_t i);
+  // The loop-1 target of a baseline controller for robot i.
+  Vec2 baseline_target(std::uint32_t i);
+  // What robot i knows of the others: the virtual generators (or, for the baselines, the
+  // real positions) in its table, its own first; entries on top of another are left out.
+  std::vector<Vec2> known_generators(std::uint32_t i, bool positions) const;
+  void set_goal(Robot& r, Vec2 goal);
   void loop2(Kernel& k, std::uint32_t i);
   void check(Kernel& k);
   void broadcast(Kernel& k, std::uint32_t i);
@@ -102,10 +131,15 @@ class CoverageController {
   std::vector<Robot> robots_;
   CoverageObserver* observer_ = nullptr;
   std::unique_ptr<VoronoiPartition> virtual_partition_, real_partition_;
+  PlannerFactory planners_;
+  std::unique_ptr<VisibilityGraph> graph_;  // geodesic_lloyd
+  std::unique_ptr<GeodesicLattice> lattice_points_;
+  std::unique_ptr<GeodesicPartition> geodesic_partition_;
   EventKind loop1_kind_ = 0, loop2_kind_ = 0, sample_kind_ = 0, check_kind_ = 0;
   EventKind broadcast_kind_ = 0, deliver_kind_ = 0, sense_kind_ = 0;
   std::vector<RandomStream> noise_rng_, dropout_rng_;
   bool converged_ = false;
+  bool stuck_ = false;
   // Decentralized operation.
   std::unique_ptr<Channel> channel_;
   std::vector<NeighborTable> tables_;
@@ -113,6 +147,7 @@ class CoverageController {
   std::vector<StateMessage> in_flight_;  // messages on their way, by slot
   std::vector<std::uint32_t> free_slots_;
   NetworkTotals totals_;
+  PlannerTotals planner_totals_;
   std::vector<Vec2> lattice_;  // points of Ω for the disagreement estimate
   double lattice_weight_ = 0.0;
 };

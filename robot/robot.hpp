@@ -17,6 +17,11 @@ struct Robot {
   bool projected = false;  // t_virt lies outside Ω (an obstacle boundary Voronoi region)
   bool stable = false;     // the last loop 1 left it where it was: nothing to do
   Vec2 goal;               // the goal the planner is working on
+  Vec2 assigned;           // the loop-1 target that goal was set for
+  // Failure measures: loop-2 steps taken while the loop-1 target lay outside Ω, and the
+  // time spent stalled (the planner gave up short of its goal).
+  std::uint64_t target_outside_steps = 0;
+  double stalled_time = 0.0;
   PlanStatus status = PlanStatus::reached;
   double path_length = 0.0;
   std::unique_ptr<Planner> planner;

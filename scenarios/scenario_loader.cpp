@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <cmath>
 
 #include "core/geometry/cell_integrator.hpp"
 #include "core/geometry/geometry_error.hpp"
@@ -165,8 +166,42 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     if (auto v = r->find("max_speed")) c.max_speed = v->positive();
   }
   if (auto p = root.find("planner")) {
-    p->only_keys({"type"});
-    c.planner = p->at("type").one_of({"tangent_bug"});
+    PlannerConfig& pc = c.planner;
+    pc.type = p->at("type").one_of(
+        {"tangent_bug", "potential_field", "grid_astar", "visibility_graph", "straight_line"});
+    if (pc.type == "potential_field") {
+      p->only_keys({"type", "influence", "repulsive_gain", "stall_window"});
+      if (auto v = p->find("influence")) pc.influence = v->positive();
+      if (auto v = p->find("repulsive_gain")) pc.repulsive_gain = v->non_negative();
+      if (auto v = p->find("stall_window")) {
+        const std::uint64_t w = v->unsigned_integer();
+        if (w == 0 || w > 1'000'000) v->fail("expected a whole number of steps from 1 to 10^6");
+        pc.stall_window = static_cast<std::size_t>(w);
+      }
+    } else if (pc.type == "grid_astar") {
+      p->only_keys({"type", "resolution"});
+      if (auto v = p->find("resolution")) pc.resolution = v->positive();
+    } else {
+      p->only_keys({"type"});
+    }
+  }
+  if (auto k = root.find("controller")) {
+    ControllerConfig& cc = c.controller;
+    const std::string type =
+        k->at("type").one_of({"virtual_generators", "euclidean_lloyd", "geodesic_lloyd"});
+    cc.kind = type == "euclidean_lloyd"  ? ControllerKind::euclidean_lloyd
+              : type == "geodesic_lloyd" ? ControllerKind::geodesic_lloyd
+                                         : ControllerKind::virtual_generators;
+    if (cc.kind == ControllerKind::geodesic_lloyd) {
+      k->only_keys({"type", "resolution", "gain"});
+      if (auto v = k->find("resolution")) cc.resolution = v->positive();
+      if (auto v = k->find("gain")) {
+        cc.gain = v->positive();
+        if (cc.gain > 1.0) v->fail("expected a gain in (0, 1]");
+      }
+    } else {
+      k->only_keys({"type"});
+    }
   }
   if (auto s = root.find("sensor")) {
     s->only_keys({"range", "period", "noise", "dropout"});
@@ -233,13 +268,24 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   s.source = source;
   s.json = json;
   const JsonValue root(s.json, source);
-  root.only_keys({"environment", "density", "robots", "seed", "planner", "sensor", "loops",
-                  "convergence", "metrics", "network"});
+  root.only_keys({"environment", "density", "robots", "seed", "planner", "controller", "sensor",
+                  "loops", "convergence", "metrics", "network"});
   s.environment = read_environment(root.at("environment"));
   s.density = read_density(root.at("density"), base_dir, *s.environment);
   if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment);
   if (auto seed = root.find("seed")) s.seed = seed->unsigned_integer();
   read_coverage(root, s.coverage);
+  // Grids finer than the planners accept would fail at the start of a run: say so here.
+  const Vec2 size = s.environment->bounds().size();
+  const auto check_cells = [&](const std::optional<double>& h, const char* object, double limit) {
+    if (h && std::ceil(size.x / *h) * std::ceil(size.y / *h) > limit) {
+      root.at(object)
+          .at("resolution")
+          .fail(fmt::format("resolution too fine for this environment: more than {} cells", limit));
+    }
+  };
+  check_cells(s.coverage.planner.resolution, "planner", double(1 << 24));
+  check_cells(s.coverage.controller.resolution, "controller", double(1 << 22));
   return s;
 }
 

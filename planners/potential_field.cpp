@@ -1,0 +1,80 @@
+#include "planners/potential_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace covsim {
+
+PotentialFieldParams PotentialFieldParams::for_environment(double diameter) {
+  PotentialFieldParams p;
+  p.influence = 0.1 * diameter;
+  p.progress = 1e-3 * diameter;
+  return p;
+}
+
+void PotentialField::set_goal(Vec2 goal) {
+  goal_ = goal;
+  status_ = PlanStatus::moving;
+  best_ = INFINITY;
+  since_best_ = 0;
+}
+
+Vec2 PotentialField::force(const SensorReading& r) const {
+  const Vec2 x = r.position;
+  const double dg = distance(x, goal_);
+  Vec2 f = dg > 0.0 ? (goal_ - x) / dg : Vec2{0, 0};
+  const double d0 = p_.influence;
+  // Near the goal the push fades with (dg / d0)² (Ge and Cui, 2000), so a goal close to a
+  // wall is not hidden behind that wall's own repulsion.
+  const double fade = std::min(1.0, (dg / d0) * (dg / d0));
+  const double eta = fade * p_.repulsive_gain * d0 * d0 * d0 / 48.0;
+  for (const VisiblePiece& piece : r.visible.pieces) {
+    const Vec2 o = project_to_segment(x, piece.a, piece.b).point;
+    const double d = distance(x, o);
+    if (d >= d0 || d <= env_.tolerance()) continue;  // touching walls are handled by sliding
+    f = f + (eta * (1.0 / d - 1.0 / d0) / (d * d * d)) * (x - o);
+  }
+  // Slide along touched walls: drop the part of the motion into the obstacle (free space is
+  // on the left of each contact edge).
+  for (const ContactEdge& c : r.contacts) {
+    const Vec2 e = c.b - c.a;
+    const double len = norm(e);
+    if (len == 0.0) continue;
+    const Vec2 inward = perp(e) / len;  // into free space
+    const double into = dot(f, inward);
+    if (into < 0.0) f = f - into * inward;
+  }
+  return f;
+}
+
+PlanStep PotentialField::step(const SensorReading& r, double max_step) {
+  const Vec2 x = r.position;
+  if (status_ != PlanStatus::moving) return PlanStep{x, status_};
+  const double dg = distance(x, goal_);
+  if (dg <= env_.tolerance()) {
+    status_ = PlanStatus::reached;
+    return PlanStep{goal_, status_};
+  }
+  if (dg < best_ - p_.progress) {
+    best_ = dg;
+    since_best_ = 0;
+  } else if (++since_best_ >= p_.stall_window) {
+    status_ = PlanStatus::stalled;
+    return PlanStep{x, status_};
+  }
+  // Final approach: a goal near enough and in sight is driven to straight.
+  if (dg <= std::max(p_.influence, max_step) && (dg <= r.range || dg <= max_step) &&
+      env_.segment_inside(x, goal_)) {
+    if (dg <= max_step) {
+      status_ = PlanStatus::reached;
+      return PlanStep{goal_, status_};
+    }
+    return PlanStep{x + (max_step / dg) * (goal_ - x), status_};
+  }
+  const Vec2 f = force(r);
+  const double fn = norm(f);
+  if (fn <= 1e-12) return PlanStep{x, status_};  // a minimum: the window will tell
+  return PlanStep{env_.advance(x, x + (std::min(max_step, dg) / fn) * f), status_};
+}
+
+}  // namespace covsim

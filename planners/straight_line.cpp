@@ -1,0 +1,26 @@
+#include "planners/straight_line.hpp"
+
+namespace covsim {
+
+void StraightLine::set_goal(Vec2 goal) {
+  goal_ = goal;
+  status_ = PlanStatus::moving;
+}
+
+PlanStep StraightLine::step(const SensorReading& r, double max_step) {
+  const Vec2 x = r.position;
+  if (status_ != PlanStatus::moving) return PlanStep{x, status_};
+  const double d = distance(x, goal_);
+  if (d <= env_.tolerance()) {
+    status_ = PlanStatus::reached;
+    return PlanStep{goal_, status_};
+  }
+  const Vec2 want = d <= max_step ? goal_ : x + (max_step / d) * (goal_ - x);
+  const Vec2 next = env_.advance(x, want);
+  // A wall in the way: stop at it (the step that reaches the wall still moves).
+  if (distance(next, x) <= env_.tolerance()) status_ = PlanStatus::stalled;
+  if (next == goal_) status_ = PlanStatus::reached;
+  return PlanStep{next, status_};
+}
+
+}  // namespace covsim
