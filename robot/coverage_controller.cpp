@@ -367,8 +367,10 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     r.stable = false;
     // A planner that gives up on a target outside Ω: the target is unreachable, so the
     // robot goes to its projection instead.
-    if (r.status == PlanStatus::stalled && r.projected && !(r.goal == r.real_target))
+    if (r.status == PlanStatus::stalled && r.projected && !(r.goal == r.real_target)) {
+      r.stalled_time += config_.loop2_period.seconds();
       set_goal(r, r.real_target);
+    }
   }
   if (r.projected) ++r.target_outside_steps;
   if (r.status == PlanStatus::stalled) r.stalled_time += config_.loop2_period.seconds();

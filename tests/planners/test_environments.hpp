@@ -1,6 +1,6 @@
 #pragma once
 // Environments that make planners work: a spiral corridor, a serpentine maze with pillars,
-// a room with an obstacle.
+// a room with an obstacle, a comb-shaped room.
 #include <vector>
 
 #include "core/geometry/environment.hpp"
@@ -61,6 +61,24 @@ inline Environment room_with_cup() {
   return Environment(
       {{0, 0}, {6, 0}, {6, 4}, {0, 4}},
       {{{2, 1}, {4, 1}, {4, 3}, {3.8, 3}, {3.8, 1.2}, {2.2, 1.2}, {2.2, 3}, {2, 3}}});
+}
+
+// A comb-shaped room: a hall along the top with five teeth (walls of the outer ring) hanging
+// down from it into the bottom part, making four bays open toward the hall.
+inline Environment comb() {
+  // The outer ring runs counter-clockwise; teeth are notches cut up from the bottom edge.
+  std::vector<Vec2> ring{{0, 0}};
+  for (int k = 1; k <= 4; ++k) {
+    const double x = 2.0 * k;
+    ring.push_back({x - 0.1, 0});
+    ring.push_back({x - 0.1, 2.5});
+    ring.push_back({x + 0.1, 2.5});
+    ring.push_back({x + 0.1, 0});
+  }
+  ring.push_back({10, 0});
+  ring.push_back({10, 4});
+  ring.push_back({0, 4});
+  return Environment(ring, {});
 }
 
 }  // namespace covsim::test

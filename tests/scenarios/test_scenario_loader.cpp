@@ -109,6 +109,51 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
                "$.loops.loop2_period: expected a positive number");
 }
 
+TEST_CASE("planners and controllers with their parameters", "[scenario]") {
+  const std::string d = R"("density": {"type": "uniform"})";
+  const fs::path f =
+      write("planners.json",
+            "{" + kSquare + ", " + d +
+                R"(, "planner": {"type": "potential_field", "influence": 0.3, "stall_window": 7},
+               "controller": {"type": "geodesic_lloyd", "resolution": 0.05, "gain": 0.5}})");
+  const Scenario s = load_scenario(f);
+  CHECK(s.coverage.planner.type == "potential_field");
+  CHECK(s.coverage.planner.influence == 0.3);
+  CHECK(s.coverage.planner.stall_window == std::size_t{7});
+  CHECK(s.coverage.controller.kind == ControllerKind::geodesic_lloyd);
+  CHECK(s.coverage.controller.resolution == 0.05);
+  CHECK(s.coverage.controller.gain == 0.5);
+  for (const char* type : {"tangent_bug", "grid_astar", "visibility_graph", "straight_line"}) {
+    const fs::path g = write(
+        "planner.json", "{" + kSquare + ", " + d + R"(, "planner": {"type": ")" + type + R"("}})");
+    CHECK(load_scenario(g).coverage.planner.type == type);
+  }
+  expect_error("{" + kSquare + ", " + d + R"(, "planner": {"type": "rrt"}})",
+               "$.planner.type: expected one of");
+  expect_error(
+      "{" + kSquare + ", " + d + R"(, "planner": {"type": "tangent_bug", "influence": 1}})",
+      "$.planner.influence: unknown key");
+  expect_error(
+      "{" + kSquare + ", " + d + R"(, "planner": {"type": "grid_astar", "resolution": 0}})",
+      "$.planner.resolution: expected a positive number");
+  expect_error(
+      "{" + kSquare + ", " + d + R"(, "planner": {"type": "grid_astar", "resolution": 1e-6}})",
+      "$.planner.resolution: resolution too fine");
+  expect_error(
+      "{" + kSquare + ", " + d + R"(, "planner": {"type": "potential_field", "stall_window": 0}})",
+      "$.planner.stall_window: expected a whole number");
+  expect_error("{" + kSquare + ", " + d + R"(, "controller": {"type": "voronoi"}})",
+               "$.controller.type: expected one of");
+  expect_error(
+      "{" + kSquare + ", " + d + R"(, "controller": {"type": "euclidean_lloyd", "gain": 1}})",
+      "$.controller.gain: unknown key");
+  expect_error(
+      "{" + kSquare + ", " + d + R"(, "controller": {"type": "geodesic_lloyd", "gain": 2}})",
+      "$.controller.gain: expected a gain in (0, 1]");
+  expect_error("{" + kSquare + ", " + d + R"(, "controller": {"resolution": 0.1}})",
+               "$.controller: missing required key \"type\"");
+}
+
 TEST_CASE("raster densities load relative to the scenario file", "[scenario]") {
   write("ramp.csv", "3,4\n1,2\n");
   const fs::path f = write(

@@ -1,0 +1,153 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "analysis/coverage_run.hpp"
+#include "core/geometry/visibility_graph.hpp"
+#include "scenarios/scenario.hpp"
+
+using namespace covsim;
+
+namespace {
+
+Scenario paper(const std::string& name) {
+  return load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/" + name);
+}
+
+// Every motion step stays in Ω.
+struct MotionChecker final : CoverageObserver {
+  const Environment* env;
+  std::vector<Vec2> last;
+  std::size_t outside = 0;
+  explicit MotionChecker(const Scenario& s) : env(s.environment.get()), last(s.robot_positions) {}
+  void on_motion(SimTime, const Robot& r) override {
+    if (!env->segment_inside(last[r.id], r.position)) ++outside;
+    last[r.id] = r.position;
+  }
+};
+
+CoverageOutcome run(const Scenario& s) {
+  MotionChecker checker(s);
+  CoverageOutcome out = run_coverage(s, &checker);
+  CHECK(checker.outside == 0);
+  return out;
+}
+
+// The uniform geodesic cost ½ ∫ d_g(p, x)² over Ω, by exact shortest paths to the points
+// of a lattice of spacing h: independent of the controller's lattice and trees.
+double geodesic_cost(const VisibilityGraph& g, Vec2 p, double h) {
+  const Environment& env = g.environment();
+  double sum = 0.0;
+  for (double x = h / 2; x < env.bounds().hi.x; x += h) {
+    for (double y = h / 2; y < env.bounds().hi.y; y += h) {
+      if (!env.contains({x, y})) continue;
+      const double d = g.shortest_path(p, {x, y}).length;
+      sum += 0.5 * d * d * h * h;
+    }
+  }
+  return sum;
+}
+}  // namespace
+
+TEST_CASE("geodesic Lloyd settles at the compromise point of Fig. 2b", "[baseline]") {
+  Scenario s = paper("fig2b.json");
+  s.coverage.controller.kind = ControllerKind::geodesic_lloyd;
+  s.coverage.controller.resolution = 0.005;
+  s.coverage.position_tolerance = 1e-4;
+  s.coverage.planner.type = "visibility_graph";
+  const CoverageOutcome out = run(s);
+  REQUIRE(out.converged);
+  const Vec2 p = out.robots[0].position;
+  // The brute-force minimiser of the geodesic cost on the U's axis of symmetry.
+  const VisibilityGraph g(*s.environment);
+  double best_y = 0.0, best = INFINITY;
+  for (double y = 0.25; y < 0.3451; y += 0.0025) {
+    const double c = geodesic_cost(g, {0.5, y}, 0.01);
+    if (c < best) best = c, best_y = y;
+  }
+  INFO("final (" << p.x << ", " << p.y << "), brute-force minimum at y = " << best_y);
+  CHECK(std::abs(p.x - 0.5) < 0.005);
+  CHECK(std::abs(p.y - best_y) < 0.005);
+  // A compromise short of the notch: inside Ω, below the projection of the centroid
+  // (0.5, 0.35) and far from the Euclidean centroid (0.5, 0.4576) in the obstacle.
+  CHECK(best_y < 0.335);
+  CHECK(distance(p, {0.5, 0.4576}) > 0.13);
+  CHECK(out.robots[0].status == PlanStatus::reached);
+  CHECK(out.target_outside_steps == 0);
+}
+
+TEST_CASE("Lloyd on real positions with straight-line motion gets stuck on Fig. 2c", "[baseline]") {
+  Scenario s = paper("fig2c.json");
+  s.coverage.controller.kind = ControllerKind::euclidean_lloyd;
+  s.coverage.planner.type = "straight_line";
+  const CoverageOutcome stuck = run(s);
+  CHECK_FALSE(stuck.converged);
+  CHECK(stuck.stop_reason == "stuck");
+  const RobotOutcome& r = stuck.robots[0];
+  CHECK(r.status == PlanStatus::stalled);
+  // Against the obstacle, short of the projection of its target.
+  CHECK_FALSE(s.environment->edges_at(r.position).empty());
+  CHECK(distance(r.position, r.real_target) > 0.1);
+  CHECK(r.target_outside_steps > 0);
+  CHECK(r.stalled_time > 0.0);
+  CHECK(r.centroid_distance > 0.1);
+
+  // The paper's controller with TangentBug converges, at the projection.
+  const CoverageOutcome ok = run(paper("fig2c.json"));
+  CHECK(ok.converged);
+  CHECK(ok.stop_reason == "converged");
+  CHECK(ok.robots[0].projected);
+  CHECK(distance(ok.robots[0].position, ok.robots[0].real_target) < 1e-3);
+  CHECK(ok.cost_real < stuck.cost_real);
+}
+
+TEST_CASE("a planner that stalls short of a target outside Ω is sent to its projection",
+          "[baseline]") {
+  // Straight at the centroid inside the hole, from the left: the wall stops the robot at
+  // the projection itself, which it then reaches.
+  Scenario s = paper("fig2c.json");
+  s.robot_positions = {{0.1, 0.5}};
+  s.coverage.planner.type = "straight_line";
+  const CoverageOutcome out = run(s);
+  CHECK(out.converged);
+  CHECK(out.robots[0].status == PlanStatus::reached);
+  CHECK(out.robots[0].projected);
+  CHECK(distance(out.robots[0].position, Vec2{0.42, 0.5}) < 1e-9);
+  CHECK(out.stalled_time > 0.0);
+}
+
+TEST_CASE("Euclidean Lloyd with an exact planner ends at the centroids", "[baseline]") {
+  for (const char* planner : {"visibility_graph", "grid_astar", "tangent_bug"}) {
+    Scenario s = paper("l_shape.json");
+    s.coverage.controller.kind = ControllerKind::euclidean_lloyd;
+    s.coverage.planner.type = planner;
+    const CoverageOutcome out = run(s);
+    INFO(planner);
+    CHECK(out.converged);
+    CHECK(out.centroid_distance_max < 2e-3 * s.environment->diameter());
+    CHECK(out.stalled_time == 0.0);
+  }
+}
+
+TEST_CASE("every planner and controller runs the paper's scenarios inside Ω and ends",
+          "[baseline]") {
+  for (const char* name : {"l_shape.json", "two_obstacles.json", "fig2d.json"}) {
+    for (ControllerKind k : {ControllerKind::virtual_generators, ControllerKind::euclidean_lloyd,
+                             ControllerKind::geodesic_lloyd}) {
+      for (const char* planner :
+           {"tangent_bug", "potential_field", "grid_astar", "visibility_graph", "straight_line"}) {
+        Scenario s = paper(name);
+        s.coverage.controller.kind = k;
+        s.coverage.planner.type = planner;
+        s.coverage.max_time = SimTime::from_seconds(30.0);
+        s.coverage.controller.resolution = s.environment->diameter() / 40.0;
+        INFO(name << " " << to_string(k) << " " << planner);
+        const CoverageOutcome out = run(s);
+        CHECK((out.stop_reason == "converged" || out.stop_reason == "stuck" ||
+               out.stop_reason == "max_time"));
+        // Same scenario, same fingerprint.
+        CHECK(run_coverage(s).fingerprint == out.fingerprint);
+      }
+    }
+  }
+}
