@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include "scenarios/random_environment.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/scenario_error.hpp"
 
@@ -174,4 +175,25 @@ TEST_CASE("raster densities load relative to the scenario file", "[scenario]") {
       "{" + kSquare +
           R"(, "density": {"type": "raster", "file": "ramp.txt", "extent": [[0, 0], [4, 4]]}})",
       "$.density.file: expected a .csv or .pgm file");
+}
+
+TEST_CASE("random environments are valid scenarios, the same for the same seed", "[scenario]") {
+  std::size_t with_holes = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    RandomEnvironmentSpec spec;
+    spec.seed = seed;
+    const nlohmann::ordered_json a = random_environment(spec);
+    CHECK(a == random_environment(spec));
+    const Scenario s = parse_scenario(nlohmann::json::parse(a.dump()), "random", ".");
+    CHECK(s.robot_positions.size() == spec.robots);
+    CHECK(s.environment->hole_count() <= spec.holes);
+    with_holes += s.environment->hole_count() > 0 ? 1 : 0;
+    CHECK(s.seed == seed);
+    spec.seed = seed + 100;
+    CHECK(a["environment"] != random_environment(spec)["environment"]);
+  }
+  CHECK(with_holes >= 15);
+  RandomEnvironmentSpec bad;
+  bad.robots = 0;
+  CHECK_THROWS_AS(random_environment(bad), std::invalid_argument);
 }

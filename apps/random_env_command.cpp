@@ -1,0 +1,50 @@
+// `covsim random-env --seed N [--out FILE]`: a random polygonal environment with holes and
+// robots, as a scenario file (stdout without --out).
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "apps/commands.hpp"
+#include "apps/input_error.hpp"
+#include "core/atomic_file.hpp"
+#include "scenarios/random_environment.hpp"
+#include "scenarios/scenario.hpp"
+
+namespace covsim::app {
+
+void add_random_env_command(CLI::App& app) {
+  auto spec = std::make_shared<RandomEnvironmentSpec>();
+  auto out = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand(
+      "random-env", "Write a random polygonal environment with holes and robots as a scenario");
+  cmd->add_option("--seed", spec->seed, "Seed: the same seed gives the same scenario")->required();
+  cmd->add_option("--out", *out, "Scenario file to write (default: stdout)");
+  cmd->add_option("--size", spec->size, "Side of the square the environment lies in [m]")
+      ->capture_default_str();
+  cmd->add_option("--vertices", spec->outer_vertices, "Vertices of the outer ring")
+      ->capture_default_str();
+  cmd->add_option("--holes", spec->holes, "Holes (at most; fewer if they do not fit)")
+      ->capture_default_str();
+  cmd->add_option("--robots", spec->robots, "Robots")->capture_default_str();
+  cmd->callback([spec, out] {
+    nlohmann::ordered_json scenario;
+    try {
+      scenario = random_environment(*spec);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("random-env: ") + e.what());
+    }
+    const std::string text = scenario.dump(2) + "\n";
+    // What is written must load as a scenario.
+    parse_scenario(nlohmann::json::parse(text), "random-env", ".");
+    if (out->empty()) {
+      std::cout << text;
+      return;
+    }
+    AtomicFile f(*out);
+    f.stream() << text;
+    f.commit();
+  });
+}
+
+}  // namespace covsim::app

@@ -1,0 +1,112 @@
+#include "scenarios/random_environment.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "core/geometry/environment.hpp"
+#include "core/random_stream.hpp"
+
+namespace covsim {
+
+namespace {
+struct Circle {
+  Vec2 centre;
+  double radius;
+};
+
+// Whether a disc lies inside the polygon with `clearance` to spare.
+bool disc_inside(const std::vector<Vec2>& ring, const Circle& c, double clearance) {
+  bool inside = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Vec2 a = ring[j], b = ring[i];
+    if (distance(c.centre, project_to_segment(c.centre, a, b).point) < c.radius + clearance)
+      return false;
+    if ((a.y > c.centre.y) != (b.y > c.centre.y) &&
+        c.centre.x < a.x + (c.centre.y - a.y) * (b.x - a.x) / (b.y - a.y))
+      inside = !inside;
+  }
+  return inside;
+}
+
+nlohmann::ordered_json to_json(const std::vector<Vec2>& ring) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (Vec2 p : ring)
+    out.push_back({p.x, p.y});
+  return out;
+}
+}  // namespace
+
+nlohmann::ordered_json random_environment(const RandomEnvironmentSpec& spec) {
+  if (spec.outer_vertices < 3 || spec.outer_vertices > 1000)
+    throw std::invalid_argument("the outer ring needs 3 to 1000 vertices");
+  if (spec.robots < 1 || spec.robots > 1000)
+    throw std::invalid_argument("a scenario needs 1 to 1000 robots");
+  if (spec.holes > 100) throw std::invalid_argument("at most 100 holes");
+  if (!(spec.size > 0.0) || !std::isfinite(spec.size))
+    throw std::invalid_argument("the size must be a positive number");
+  const double two_pi = 2.0 * std::numbers::pi;
+  const double s = spec.size;
+  const Vec2 centre{s / 2, s / 2};
+  RandomStream outer_rng(spec.seed, 0, "random-environment-outer");
+  std::vector<Vec2> outer;
+  const double sector = two_pi / spec.outer_vertices;
+  for (std::uint32_t k = 0; k < spec.outer_vertices; ++k) {
+    const double angle = (k + outer_rng.uniform(-0.35, 0.35)) * sector;
+    const double radius = outer_rng.uniform(0.55, 1.0) * 0.5 * s;
+    outer.push_back(centre + radius * Vec2{std::cos(angle), std::sin(angle)});
+  }
+  // Holes: convex polygons in circles clear of the outer ring and of each other.
+  RandomStream hole_rng(spec.seed, 0, "random-environment-holes");
+  const double clearance = 0.04 * s;
+  std::vector<Circle> circles;
+  std::vector<std::vector<Vec2>> holes;
+  for (int attempt = 0; attempt < 200 && holes.size() < spec.holes; ++attempt) {
+    const Circle c{{hole_rng.uniform(0.1, 0.9) * s, hole_rng.uniform(0.1, 0.9) * s},
+                   hole_rng.uniform(0.05, 0.13) * s};
+    bool fits = disc_inside(outer, c, clearance);
+    for (const Circle& o : circles)
+      fits = fits && distance(c.centre, o.centre) >= c.radius + o.radius + clearance;
+    if (!fits) continue;
+    const auto n = static_cast<std::uint32_t>(3 + hole_rng.next_u64() % 4);
+    std::vector<Vec2> ring;
+    const double phase = hole_rng.uniform(0.0, two_pi);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const double angle = phase + (k + hole_rng.uniform(-0.25, 0.25)) * two_pi / n;
+      ring.push_back(c.centre + c.radius * Vec2{std::cos(angle), std::sin(angle)});
+    }
+    circles.push_back(c);
+    holes.push_back(std::move(ring));
+  }
+  const Environment env(outer, holes);  // validates: throws GeometryError if anything is off
+  // Robots: points of Ω away from ∂Ω and from each other.
+  RandomStream robot_rng(spec.seed, 0, "random-environment-robots");
+  std::vector<Vec2> robots;
+  const double apart = 0.02 * s;
+  for (int attempt = 0; attempt < 100000 && robots.size() < spec.robots; ++attempt) {
+    const Vec2 p{robot_rng.uniform(0.0, s), robot_rng.uniform(0.0, s)};
+    if (!env.contains(p)) continue;
+    bool ok = true;
+    for (const BoundaryEdge& e : env.boundary())
+      ok = ok && distance(p, project_to_segment(p, e.a, e.b).point) >= apart;
+    for (Vec2 q : robots)
+      ok = ok && distance(p, q) >= apart;
+    if (ok) robots.push_back(p);
+  }
+  if (robots.size() < spec.robots)
+    throw std::invalid_argument("could not place the robots: the environment is too narrow");
+  nlohmann::ordered_json out;
+  out["environment"]["outer"] = to_json(outer);
+  out["environment"]["holes"] = nlohmann::ordered_json::array();
+  for (const auto& h : holes)
+    out["environment"]["holes"].push_back(to_json(h));
+  out["density"] = {{"type", "uniform"}};
+  out["robots"]["positions"] = to_json(robots);
+  out["seed"] = spec.seed;
+  // Room to cross the environment several times at the default speed (0.1 m/s).
+  out["convergence"] = {{"max_time", 300.0 * s}};
+  return out;
+}
+
+}  // namespace covsim
