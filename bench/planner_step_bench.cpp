@@ -1,0 +1,80 @@
+// Compute time of one planner step on office.json, per planner: the cost a planner adds to
+// every loop-2 step (planning a whole path, for map-based planners, is spread over the
+// steps that follow it). Sensing is not timed: each planner's episodes are first driven
+// once to record its sensor readings, and the timed loop feeds them to a second planner
+// of the same kind (the same path the first time round; a planner with memory, such as
+// TangentBug, may decide differently later, which changes its work little).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "core/random_stream.hpp"
+#include "planners/planner_factory.hpp"
+#include "scenarios/scenario.hpp"
+
+namespace {
+
+using namespace covsim;
+
+struct Episode {
+  Vec2 goal;
+  std::vector<SensorReading> readings;  // one per step
+};
+
+void BM_PlannerStep(benchmark::State& state, const char* planner) {
+  const Scenario s = load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/office.json");
+  const Environment& env = *s.environment;
+  const double range = s.coverage.sensor_range;
+  const double step = s.coverage.max_speed * s.coverage.loop2_period.seconds();
+  PlannerConfig config;
+  config.type = planner;
+  PlannerFactory factory(env, config);
+  // Goals spread over the rooms, visited one after another from the first robot's start.
+  RandomStream rng(1, 0, "bench-goals");
+  std::vector<Episode> episodes;
+  Vec2 x = s.robot_positions.front();
+  auto recorder = factory.make();
+  while (episodes.size() < 8) {
+    const Vec2 g{rng.uniform(env.bounds().lo.x, env.bounds().hi.x),
+                 rng.uniform(env.bounds().lo.y, env.bounds().hi.y)};
+    if (!env.contains(g)) continue;
+    Episode e{g, {}};
+    recorder->set_goal(g);
+    for (int k = 0; k < 100000; ++k) {
+      e.readings.push_back(sense(env, x, range));
+      const PlanStep p = recorder->step(e.readings.back(), step);
+      x = env.advance(x, p.next);
+      if (is_settled(p.status)) break;
+    }
+    episodes.push_back(std::move(e));
+  }
+  auto timed = factory.make();
+  std::size_t ep = 0, k = 0, steps = 0;
+  timed->set_goal(episodes[0].goal);
+  for (auto _ : state) {
+    const PlanStep p = timed->step(episodes[ep].readings[k], step);
+    benchmark::DoNotOptimize(p.next);
+    ++steps;
+    if (++k == episodes[ep].readings.size()) {
+      k = 0;
+      ep = (ep + 1) % episodes.size();
+      timed->set_goal(episodes[ep].goal);
+    }
+  }
+  std::size_t recorded = 0;
+  for (const Episode& e : episodes)
+    recorded += e.readings.size();
+  state.counters["steps_per_goal"] =
+      static_cast<double>(recorded) / static_cast<double>(episodes.size());
+  benchmark::DoNotOptimize(steps);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_PlannerStep, tangent_bug, "tangent_bug");
+BENCHMARK_CAPTURE(BM_PlannerStep, potential_field, "potential_field");
+BENCHMARK_CAPTURE(BM_PlannerStep, grid_astar, "grid_astar");
+BENCHMARK_CAPTURE(BM_PlannerStep, visibility_graph, "visibility_graph");
+BENCHMARK_CAPTURE(BM_PlannerStep, straight_line, "straight_line");
