@@ -60,6 +60,7 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
   sampler.on_finish(kernel.now(), controller);
 
   CoverageOutcome out;
+  out.scenario = scenario.source;
   out.converged = controller.converged();
   out.sim_time = kernel.now();
   out.stop_reason = out.converged ? "converged" : controller.stuck() ? "stuck" : "max_time";

@@ -26,6 +26,7 @@ struct RobotOutcome {
 };
 
 struct CoverageOutcome {
+  std::string scenario;  // the scenario's source (its file name)
   bool converged = false;
   SimTime sim_time;
   std::string stop_reason;  // "converged", "stuck" (see CoverageController::stuck) or "max_time"

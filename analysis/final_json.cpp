@@ -8,6 +8,7 @@ namespace covsim {
 
 std::string final_json(const CoverageOutcome& o) {
   nlohmann::ordered_json j;
+  j["scenario"] = o.scenario;
   j["converged"] = o.converged;
   j["sim_time"] = o.sim_time.seconds();
   j["robots"] = nlohmann::ordered_json::array();

@@ -6,23 +6,26 @@ namespace covsim {
 
 RunRecorder::RunRecorder(const std::filesystem::path& dir, const std::vector<Vec2>& starts)
     : trajectory_(dir / "trajectory.csv"), metrics_(dir / "metrics.csv") {
-  trajectory_buffer_ = "t,robot,x,y,vx,vy\n";
+  trajectory_buffer_ = "t,robot,x,y,vx,vy,tx,ty,rx,ry\n";
   metrics_buffer_ =
       "t,cost_real,cost_virtual,cost_real_in_virtual_partition,settled,projected,path_length,"
       "messages_sent,messages_delivered,messages_lost,info_age_mean,info_age_max,"
       "area_claimed_by_none,area_claimed_by_several,components,largest_component,diameter_hops,"
       "average_degree,algebraic_connectivity\n";
   for (std::size_t i = 0; i < starts.size(); ++i) {
-    fmt::format_to(std::back_inserter(trajectory_buffer_), "0,{},{},{},{},{}\n", i, starts[i].x,
-                   starts[i].y, starts[i].x, starts[i].y);
+    const Vec2 s = starts[i];
+    fmt::format_to(std::back_inserter(trajectory_buffer_), "0,{},{},{},{},{},{},{},{},{}\n", i, s.x,
+                   s.y, s.x, s.y, s.x, s.y, s.x, s.y);
     real_.push_back({starts[i]});
     virtual_.push_back({starts[i]});
   }
 }
 
 void RunRecorder::on_motion(SimTime t, const Robot& r) {
-  fmt::format_to(std::back_inserter(trajectory_buffer_), "{},{},{},{},{},{}\n", t.seconds(), r.id,
-                 r.position.x, r.position.y, r.virtual_generator.x, r.virtual_generator.y);
+  fmt::format_to(std::back_inserter(trajectory_buffer_), "{},{},{},{},{},{},{},{},{},{}\n",
+                 t.seconds(), r.id, r.position.x, r.position.y, r.virtual_generator.x,
+                 r.virtual_generator.y, r.virtual_target.x, r.virtual_target.y, r.real_target.x,
+                 r.real_target.y);
   if (!(real_[r.id].back() == r.position)) real_[r.id].push_back(r.position);
   if (!(virtual_[r.id].back() == r.virtual_generator))
     virtual_[r.id].push_back(r.virtual_generator);

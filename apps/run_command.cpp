@@ -10,6 +10,7 @@
 #include "analysis/coverage_run.hpp"
 #include "analysis/figures.hpp"
 #include "analysis/final_json.hpp"
+#include "analysis/run_files.hpp"
 #include "analysis/run_recorder.hpp"
 #include "analysis/trace_replay.hpp"
 #include "apps/commands.hpp"
@@ -73,10 +74,14 @@ void add_run_command(CLI::App& app) {
     const CoverageOutcome outcome = run_coverage(scenario, &recorder, trace.get());
 
     AtomicFile final_file(dir / "final.json"), scene(dir / "scene.svg"), cost(dir / "cost.svg");
+    AtomicFile scenario_copy(dir / "scenario.json");
+    scenario_copy.stream()
+        << portable_scenario(scenario, fs::path(opts->scenario).parent_path()).dump(2) << "\n";
     final_file.stream() << final_json(outcome);
     scene.stream() << scene_svg(scenario, outcome, recorder.real_paths(), recorder.virtual_paths());
     cost.stream() << cost_svg(recorder.samples());
     recorder.commit();
+    scenario_copy.commit();
     final_file.commit();
     scene.commit();
     cost.commit();
@@ -93,7 +98,8 @@ void add_run_command(CLI::App& app) {
                outcome.cost_virtual, outcome.cost_real, outcome.cost_real_in_virtual_partition);
     fmt::print("fingerprint {}\n", Fingerprint::to_hex(outcome.fingerprint));
     fmt::print(
-        "wrote {0}/final.json, {0}/trajectory.csv, {0}/metrics.csv, {0}/scene.svg, {0}/cost.svg\n",
+        "wrote {0}/scenario.json, {0}/final.json, {0}/trajectory.csv, {0}/metrics.csv, "
+        "{0}/scene.svg, {0}/cost.svg\n",
         dir.string());
   });
 }

@@ -169,21 +169,17 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     PlannerConfig& pc = c.planner;
     pc.type = p->at("type").one_of(
         {"tangent_bug", "potential_field", "grid_astar", "visibility_graph", "straight_line"});
-    if (pc.type == "potential_field") {
-      p->only_keys({"type", "influence", "repulsive_gain", "stall_window"});
-      if (auto v = p->find("influence")) pc.influence = v->positive();
-      if (auto v = p->find("repulsive_gain")) pc.repulsive_gain = v->non_negative();
-      if (auto v = p->find("stall_window")) {
-        const std::uint64_t w = v->unsigned_integer();
-        if (w == 0 || w > 1'000'000) v->fail("expected a whole number of steps from 1 to 10^6");
-        pc.stall_window = static_cast<std::size_t>(w);
-      }
-    } else if (pc.type == "grid_astar") {
-      p->only_keys({"type", "resolution"});
-      if (auto v = p->find("resolution")) pc.resolution = v->positive();
-    } else {
-      p->only_keys({"type"});
+    // Every planner's parameters are accepted whatever the type (each planner reads its
+    // own), so that a sweep can vary the type with parameters set.
+    p->only_keys({"type", "influence", "repulsive_gain", "stall_window", "resolution"});
+    if (auto v = p->find("influence")) pc.influence = v->positive();
+    if (auto v = p->find("repulsive_gain")) pc.repulsive_gain = v->non_negative();
+    if (auto v = p->find("stall_window")) {
+      const std::uint64_t w = v->unsigned_integer();
+      if (w == 0 || w > 1'000'000) v->fail("expected a whole number of steps from 1 to 10^6");
+      pc.stall_window = static_cast<std::size_t>(w);
     }
+    if (auto v = p->find("resolution")) pc.resolution = v->positive();
   }
   if (auto k = root.find("controller")) {
     ControllerConfig& cc = c.controller;
@@ -192,15 +188,12 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     cc.kind = type == "euclidean_lloyd"  ? ControllerKind::euclidean_lloyd
               : type == "geodesic_lloyd" ? ControllerKind::geodesic_lloyd
                                          : ControllerKind::virtual_generators;
-    if (cc.kind == ControllerKind::geodesic_lloyd) {
-      k->only_keys({"type", "resolution", "gain"});
-      if (auto v = k->find("resolution")) cc.resolution = v->positive();
-      if (auto v = k->find("gain")) {
-        cc.gain = v->positive();
-        if (cc.gain > 1.0) v->fail("expected a gain in (0, 1]");
-      }
-    } else {
-      k->only_keys({"type"});
+    // geodesic_lloyd's parameters are accepted with any type, as for planners.
+    k->only_keys({"type", "resolution", "gain"});
+    if (auto v = k->find("resolution")) cc.resolution = v->positive();
+    if (auto v = k->find("gain")) {
+      cc.gain = v->positive();
+      if (cc.gain > 1.0) v->fail("expected a gain in (0, 1]");
     }
   }
   if (auto s = root.find("sensor")) {

@@ -1,5 +1,6 @@
 #include "core/geometry/geodesic_partition.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -46,19 +47,30 @@ GeodesicPartition::GeodesicPartition(const GeodesicLattice& lattice, std::vector
   owner_.assign(xs.size(), kNobody);
   distance_.assign(xs.size(), kInf);
   std::vector<Vec2> direction(xs.size());
-  for (std::size_t i = 0; i < generators_.size(); ++i) {
-    const Vec2 p = generators_[i];
-    const GeodesicTree tree = graph.tree(p);
-    for (std::size_t k = 0; k < xs.size(); ++k) {
+  std::vector<GeodesicTree> trees;
+  for (Vec2 p : generators_)
+    trees.push_back(graph.tree(p));
+  // Point by point, generators in order of straight-line distance: d_g >= |x - p|, so once
+  // that exceeds the best geodesic distance found, no later generator can win, and the
+  // nearest generator is usually in sight.
+  std::vector<std::pair<double, std::size_t>> order(generators_.size());
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    for (std::size_t i = 0; i < generators_.size(); ++i)
+      order[i] = {norm2(generators_[i] - xs[k]), i};
+    std::sort(order.begin(), order.end());
+    for (const auto& [straight2, i] : order) {
+      // Squared distances order the generators; the margin keeps rounding from cutting off
+      // a generator at the same distance (which may win the tie).
+      if (straight2 > distance_[k] * distance_[k] * (1.0 + 1e-12)) break;
+      const Vec2 p = generators_[i];
       const double straight = covsim::distance(p, xs[k]);
-      // d_g >= |x - p|: a generator no nearer in a straight line cannot win.
-      if (straight >= distance_[k]) continue;
       double d = kInf;
       Vec2 u;
       if (env.segment_inside(p, xs[k])) {
         d = straight;
         u = straight > 0.0 ? (xs[k] - p) / straight : Vec2{0, 0};
       } else {
+        const GeodesicTree& tree = trees[i];
         std::uint32_t via = 0;
         for (const VisibilityGraph::Link& l : lattice.links(k)) {
           const double dv = tree.distance[l.to] + l.length;
@@ -73,7 +85,8 @@ GeodesicPartition::GeodesicPartition(const GeodesicLattice& lattice, std::vector
           u = n > 0.0 ? (first - p) / n : Vec2{0, 0};
         }
       }
-      if (d < distance_[k]) {
+      // The lowest index wins a tie.
+      if (d < distance_[k] || (d == distance_[k] && d < kInf && i < owner_[k])) {
         distance_[k] = d;
         owner_[k] = i;
         direction[k] = u;

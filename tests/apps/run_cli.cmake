@@ -1,4 +1,4 @@
-# Runs `covsim run` as a user would: the five outputs with their documented headers and
+# Runs `covsim run` as a user would: the six outputs with their documented headers and
 # keys; bad input gives exit code 2 and leaves nothing behind.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -7,7 +7,7 @@ execute_process(COMMAND ${COVSIM} run ${SOURCE}/scenarios/u_shape.json --out ${W
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "run failed (${rc}): ${err}")
 endif()
-foreach(f final.json trajectory.csv metrics.csv scene.svg cost.svg)
+foreach(f scenario.json final.json trajectory.csv metrics.csv scene.svg cost.svg)
   if(NOT EXISTS ${WORK}/u/${f})
     message(FATAL_ERROR "missing output ${f}")
   endif()
@@ -18,7 +18,7 @@ if(partial)
 endif()
 file(STRINGS ${WORK}/u/trajectory.csv traj LIMIT_COUNT 1)
 file(STRINGS ${WORK}/u/metrics.csv metrics LIMIT_COUNT 1)
-if(NOT traj STREQUAL "t,robot,x,y,vx,vy" OR NOT metrics MATCHES "^t,cost_real,cost_virtual")
+if(NOT traj STREQUAL "t,robot,x,y,vx,vy,tx,ty,rx,ry" OR NOT metrics MATCHES "^t,cost_real,cost_virtual")
   message(FATAL_ERROR "unexpected CSV headers: ${traj} / ${metrics}")
 endif()
 file(READ ${WORK}/u/final.json final)

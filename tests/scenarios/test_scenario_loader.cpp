@@ -131,9 +131,8 @@ TEST_CASE("planners and controllers with their parameters", "[scenario]") {
   }
   expect_error("{" + kSquare + ", " + d + R"(, "planner": {"type": "rrt"}})",
                "$.planner.type: expected one of");
-  expect_error(
-      "{" + kSquare + ", " + d + R"(, "planner": {"type": "tangent_bug", "influence": 1}})",
-      "$.planner.influence: unknown key");
+  expect_error("{" + kSquare + ", " + d + R"(, "planner": {"type": "tangent_bug", "range": 1}})",
+               "$.planner.range: unknown key");
   expect_error(
       "{" + kSquare + ", " + d + R"(, "planner": {"type": "grid_astar", "resolution": 0}})",
       "$.planner.resolution: expected a positive number");
@@ -145,9 +144,8 @@ TEST_CASE("planners and controllers with their parameters", "[scenario]") {
       "$.planner.stall_window: expected a whole number");
   expect_error("{" + kSquare + ", " + d + R"(, "controller": {"type": "voronoi"}})",
                "$.controller.type: expected one of");
-  expect_error(
-      "{" + kSquare + ", " + d + R"(, "controller": {"type": "euclidean_lloyd", "gain": 1}})",
-      "$.controller.gain: unknown key");
+  expect_error("{" + kSquare + ", " + d + R"(, "controller": {"type": "euclidean_lloyd", "k": 1}})",
+               "$.controller.k: unknown key");
   expect_error(
       "{" + kSquare + ", " + d + R"(, "controller": {"type": "geodesic_lloyd", "gain": 2}})",
       "$.controller.gain: expected a gain in (0, 1]");

@@ -1,0 +1,37 @@
+#pragma once
+// A run's output folder read back: what `covsim run` wrote (scenario.json, final.json,
+// trajectory.csv, metrics.csv) is enough to redraw its figures and its replay.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/coverage_run.hpp"
+#include "analysis/run_recorder.hpp"
+
+namespace covsim {
+
+// One row of trajectory.csv.
+struct TrajectoryRow {
+  double t;
+  std::uint32_t robot;
+  Vec2 position, virtual_generator, virtual_target, real_target;
+};
+
+struct RunFiles {
+  Scenario scenario;        // from scenario.json, with the original file's name as its source
+  CoverageOutcome outcome;  // what final.json holds
+  std::vector<TrajectoryRow> trajectory;
+  std::vector<MetricsSample> samples;  // the cost columns of metrics.csv
+  // Each robot's path and its virtual generator's, as RunRecorder keeps them.
+  std::vector<std::vector<Vec2>> real_paths() const;
+  std::vector<std::vector<Vec2>> virtual_paths() const;
+};
+
+// The scenario as a run folder keeps it: the scenario's JSON with files it names made
+// absolute, so the copy loads from anywhere.
+nlohmann::json portable_scenario(const Scenario& scenario, const std::filesystem::path& dir);
+
+// Throws ScenarioError naming the file (and line, for CSV) that is missing or malformed.
+RunFiles read_run_files(const std::filesystem::path& dir);
+
+}  // namespace covsim
