@@ -383,12 +383,13 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
       varies[q] = varies[q] || s[q] != spec.settings.front()[q];
   }
   for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
-    // Only parameters that are numbers and take at least two values make an x axis.
+    // Only parameters that are numbers and take at least two values make an x axis; null
+    // (an unlimited value, such as an infinite sensor range) is left off the axis.
     bool numeric = true;
     std::set<double> values;
     for (const auto& s : spec.settings) {
-      numeric = numeric && s[p].is_number();
-      if (numeric) values.insert(s[p].get<double>());
+      numeric = numeric && (s[p].is_number() || s[p].is_null());
+      if (numeric && s[p].is_number()) values.insert(s[p].get<double>());
     }
     if (!numeric || values.size() < 2 || (group_index && *group_index == p)) continue;
     for (const std::string& metric : sweep_metrics()) {
@@ -397,8 +398,8 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
       // combination of the other varying parameters; points at this parameter's values.
       std::map<std::string, std::map<double, std::vector<double>>> lines;
       for (const SweepResult& r : results) {
-        if (r.error) continue;
         const SweepRun& run = runs.at(r.index);
+        if (r.error || run.values[p].is_null()) continue;
         std::string label;
         for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
           const bool names_line = group_index ? q == *group_index : varies[q];

@@ -92,7 +92,7 @@ void add_run_command(CLI::App& app) {
     for (const RobotOutcome& r : outcome.robots)
       projected += r.projected ? 1 : 0;
     fmt::print("{} after {:.2f} s simulated ({} events): {} robots, {} projected\n",
-               outcome.converged ? "converged" : "not converged (max_time reached)",
+               outcome.converged ? "converged" : "not converged (" + outcome.stop_reason + ")",
                outcome.sim_time.seconds(), outcome.events, outcome.robots.size(), projected);
     fmt::print("cost: virtual {:.6g}, real {:.6g}, real in virtual partition {:.6g}\n",
                outcome.cost_virtual, outcome.cost_real, outcome.cost_real_in_virtual_partition);

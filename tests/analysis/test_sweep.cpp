@@ -224,3 +224,22 @@ TEST_CASE("plots group their lines by a chosen parameter", "[sweep]") {
   CHECK_THROWS_WITH(write_sweep_plots(dir / "out", spec, results, "planner.type"),
                     Catch::Contains("not a swept parameter"));
 }
+
+TEST_CASE("an unlimited (null) value is left off a plot's axis, not the plot", "[sweep]") {
+  const fs::path dir = temp_dir("null-axis");
+  const SweepSpec spec =
+      load_sweep(write_sweep(dir, R"({"scenario": ")" + std::string(COVSIM_SOURCE_DIR) +
+                                      R"(/scenarios/u_shape.json",
+      "grid": {"sensor.range": [0.1, 0.5, null]}, "seeds": [1]})"));
+  const auto results = run_sweep(spec, dir / "out", SweepOptions{2, false, 0, 1});
+  REQUIRE(results.size() == 3);
+  const auto plots = write_sweep_plots(dir / "out", spec, results, "");
+  REQUIRE_FALSE(plots.empty());
+  for (const fs::path& f : plots)
+    CHECK_THAT(f.filename().string(), Catch::EndsWith("_vs_sensor.range.svg"));
+  // The runs.csv still holds the unlimited run.
+  write_runs_csv(dir / "out" / "runs.csv", spec, results);
+  std::ifstream in(dir / "out" / "runs.csv");
+  const std::string csv((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(csv, Catch::Contains(",null,"));
+}
