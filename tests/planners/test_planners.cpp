@@ -20,9 +20,11 @@ constexpr std::size_t kMaxSteps = 200000;
 
 PlannerRun go(const Environment& env, Planner& planner, Vec2 start, Vec2 goal, double range) {
   PlannerRun run = run_planner(env, planner, start, goal, range, kStep, kMaxSteps);
-  // Never leaves Ω, and always ends.
-  for (std::size_t k = 0; k + 1 < run.path.size(); ++k)
+  // Never leaves Ω, never steps farther than allowed, and always ends.
+  for (std::size_t k = 0; k + 1 < run.path.size(); ++k) {
     REQUIRE(env.segment_inside(run.path[k], run.path[k + 1]));
+    REQUIRE(distance(run.path[k], run.path[k + 1]) <= kStep * (1.0 + 1e-12));
+  }
   CHECK(run.status != PlanStatus::moving);
   return run;
 }
@@ -60,14 +62,16 @@ Environment two_obstacles() {
 }
 }  // namespace
 
-TEST_CASE("map-based planners reach reachable goals in a spiral, a maze, a comb and a cup",
+TEST_CASE("TangentBug and the map-based planners reach goals in a spiral, a maze, a comb, a cup",
           "[planners]") {
   for (const Case& c : reachable_cases()) {
-    for (const char* name : {"grid_astar", "visibility_graph"}) {
-      INFO(c.what << " with " << name);
-      const PlannerRun run = go(c.env, name, c.start, c.goal);
-      CHECK(run.status == PlanStatus::reached);
-      CHECK(distance(run.path.back(), c.goal) < 1e-9);
+    for (const char* name : {"grid_astar", "visibility_graph", "tangent_bug"}) {
+      for (double range : {0.5, double(INFINITY)}) {
+        INFO(c.what << " with " << name << ", range " << range);
+        const PlannerRun run = go(c.env, name, c.start, c.goal, range);
+        CHECK(run.status == PlanStatus::reached);
+        CHECK(distance(run.path.back(), c.goal) < 1e-6);
+      }
     }
   }
 }
