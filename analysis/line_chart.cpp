@@ -40,6 +40,8 @@ constexpr const char* kPalette[] = {"#d62728", "#1f5fbf", "#2ca02c", "#ff7f0e",
 std::string line_chart_svg(const std::string& title, const std::string& x_label,
                            const std::string& y_label, const std::vector<ChartSeries>& series) {
   const double w = 680, h = 420, left = 80, right = 20, top = 40, bottom = 50;
+  // The legend goes under the chart, a row per series, so it never hides a line.
+  const double legend_row = 16, total_h = h + 8 + legend_row * static_cast<double>(series.size());
   double x0 = INFINITY, x1 = -INFINITY, y0 = 0.0, y1 = -INFINITY;
   for (const ChartSeries& s : series) {
     for (const ChartPoint& p : s.points) {
@@ -64,7 +66,7 @@ std::string line_chart_svg(const std::string& title, const std::string& x_label,
       "{1}\" "
       "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"{0}\" height=\"{1}\" "
       "fill=\"#ffffff\"/>\n",
-      w, h);
+      w, total_h);
   out +=
       fmt::format("<text x=\"{:.1f}\" y=\"20\" font-size=\"14\">{}</text>\n", left, escape(title));
   for (double x = x0; x <= x1 + 1e-9 * xs; x += xs) {
@@ -110,13 +112,13 @@ std::string line_chart_svg(const std::string& title, const std::string& x_label,
                            Y(p.y), colour);
       }
     }
-    const double ly = top + 4 + 16.0 * static_cast<double>(k);
+    const double ly = h + 4 + legend_row * static_cast<double>(k);
     out += fmt::format(
         "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" "
         "stroke-width=\"2\"{4}/>"
         "<text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>\n",
-        w - right - 300, ly, w - right - 275, colour, s.dashed ? " stroke-dasharray=\"6,4\"" : "",
-        w - right - 268, ly + 4, escape(s.label));
+        left, ly, left + 25, colour, s.dashed ? " stroke-dasharray=\"6,4\"" : "", left + 32, ly + 4,
+        escape(s.label));
   }
   out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n",
                      (X(x0) + X(x1)) / 2, h - 12, escape(x_label));
