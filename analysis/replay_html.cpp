@@ -122,10 +122,13 @@ const ctx = canvas.getContext("2d"), timeLabel = document.getElementById("time")
 const statusBox = document.getElementById("status");
 document.getElementById("title").textContent = D.title + " — " + D.robots + " robots";
 slider.max = String(D.frames.length - 1);
-const W = canvas.width, H = canvas.height, pad = 20;
-const sx = (W - 2 * pad) / (D.hi[0] - D.lo[0]), sy = (H - 2 * pad) / (D.hi[1] - D.lo[1]);
-const scale = Math.min(sx, sy);
-const X = x => pad + (x - D.lo[0]) * scale, Y = y => H - pad - (y - D.lo[1]) * scale;
+// The canvas takes Ω's aspect ratio (within limits); the drawing is centred in it.
+const pad = 20, W = canvas.width, spanX = D.hi[0] - D.lo[0], spanY = D.hi[1] - D.lo[1];
+canvas.height = Math.max(300, Math.min(800, Math.round((W - 2 * pad) * spanY / spanX + 2 * pad)));
+const H = canvas.height;
+const scale = Math.min((W - 2 * pad) / spanX, (H - 2 * pad) / spanY);
+const ox = (W - spanX * scale) / 2, oy = (H - spanY * scale) / 2;
+const X = x => ox + (x - D.lo[0]) * scale, Y = y => H - oy - (y - D.lo[1]) * scale;
 let drawnCells = 0, drawnRobots = 0, shownFrame = -1;
 function robot(f, i) {{ const a = D.frames[f], k = 8 * i; return a.slice(k, k + 8); }}
 // The Voronoi cell of generator i: the bounding box cut by the bisector half-planes.
