@@ -5,26 +5,13 @@
 #include "analysis/coverage_run.hpp"
 #include "core/geometry/visibility_graph.hpp"
 #include "scenarios/scenario.hpp"
+#include "tests/robot/paper_scenarios.hpp"
 
 using namespace covsim;
+using covsim::test::MotionChecker;
+using covsim::test::paper;
 
 namespace {
-
-Scenario paper(const std::string& name) {
-  return load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/" + name);
-}
-
-// Every motion step stays in Ω.
-struct MotionChecker final : CoverageObserver {
-  const Environment* env;
-  std::vector<Vec2> last;
-  std::size_t outside = 0;
-  explicit MotionChecker(const Scenario& s) : env(s.environment.get()), last(s.robot_positions) {}
-  void on_motion(SimTime, const Robot& r) override {
-    if (!env->segment_inside(last[r.id], r.position)) ++outside;
-    last[r.id] = r.position;
-  }
-};
 
 CoverageOutcome run(const Scenario& s) {
   MotionChecker checker(s);

@@ -6,34 +6,13 @@
 #include "analysis/coverage_run.hpp"
 #include "core/fingerprint.hpp"
 #include "scenarios/scenario.hpp"
+#include "tests/robot/paper_scenarios.hpp"
 
 using namespace covsim;
+using covsim::test::MotionChecker;
+using covsim::test::paper;
 
 namespace {
-
-Scenario paper(const std::string& name) {
-  return load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/" + name);
-}
-
-// Checks every motion step of every robot against Ω, and keeps the largest gap between a
-// robot and its virtual generator.
-struct MotionChecker final : CoverageObserver {
-  const Environment* env;
-  std::map<std::uint32_t, Vec2> last;
-  std::size_t steps = 0, outside = 0;
-  double max_real_virtual_gap = 0.0;
-  explicit MotionChecker(const Scenario& s) : env(s.environment.get()) {
-    for (std::uint32_t i = 0; i < s.robot_positions.size(); ++i)
-      last[i] = s.robot_positions[i];
-  }
-  void on_motion(SimTime, const Robot& r) override {
-    ++steps;
-    if (!env->segment_inside(last[r.id], r.position)) ++outside;
-    last[r.id] = r.position;
-    max_real_virtual_gap =
-        std::max(max_real_virtual_gap, distance(r.position, r.virtual_generator));
-  }
-};
 
 double tolerance(const Scenario& s, bool virtual_tol) {
   const auto& c = s.coverage;

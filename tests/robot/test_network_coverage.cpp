@@ -2,13 +2,12 @@
 
 #include "analysis/coverage_run.hpp"
 #include "scenarios/scenario.hpp"
+#include "tests/robot/paper_scenarios.hpp"
 
 using namespace covsim;
+using covsim::test::paper;
 
 namespace {
-Scenario paper(const std::string& name) {
-  return load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/" + name);
-}
 
 Scenario with_network(const std::string& name, const nlohmann::json& network) {
   nlohmann::json j = paper(name).json;
