@@ -51,6 +51,10 @@ struct CoverageOutcome {
   // wall times that vary between runs.
   double planner_seconds = 0.0;
   std::uint64_t planner_steps = 0;
+  // Mean wall-clock microseconds per planner step (0 without steps).
+  double planner_step_time_us() const {
+    return planner_steps > 0 ? 1e6 * planner_seconds / static_cast<double>(planner_steps) : 0.0;
+  }
 };
 
 // The first sample time from which every later value stays within (1 + fraction) of the last

@@ -51,8 +51,7 @@ std::string final_json(const CoverageOutcome& o) {
   j["failures"] = std::move(fail);
   nlohmann::ordered_json planner;
   planner["steps"] = o.planner_steps;
-  planner["step_time_us"] =
-      o.planner_steps > 0 ? 1e6 * o.planner_seconds / static_cast<double>(o.planner_steps) : 0.0;
+  planner["step_time_us"] = o.planner_step_time_us();
   j["planner"] = std::move(planner);
   j["stop_reason"] = o.stop_reason;
   j["events"] = o.events;

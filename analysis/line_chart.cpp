@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/xml_escape.hpp"
+
 namespace covsim {
 
 namespace {
@@ -16,21 +18,6 @@ double tick_step(double range, int ticks) {
     if (m * p >= raw) return m * p;
   }
   return 10 * p;
-}
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else
-      out += c;
-  }
-  return out;
 }
 
 constexpr const char* kPalette[] = {"#d62728", "#1f5fbf", "#2ca02c", "#ff7f0e",
@@ -67,8 +54,8 @@ std::string line_chart_svg(const std::string& title, const std::string& x_label,
       "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"{0}\" height=\"{1}\" "
       "fill=\"#ffffff\"/>\n",
       w, total_h);
-  out +=
-      fmt::format("<text x=\"{:.1f}\" y=\"20\" font-size=\"14\">{}</text>\n", left, escape(title));
+  out += fmt::format("<text x=\"{:.1f}\" y=\"20\" font-size=\"14\">{}</text>\n", left,
+                     xml_escape(title));
   for (double x = x0; x <= x1 + 1e-9 * xs; x += xs) {
     out += fmt::format(
         "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"#e0e0e0\"/>\n",
@@ -118,14 +105,14 @@ std::string line_chart_svg(const std::string& title, const std::string& x_label,
         "stroke-width=\"2\"{4}/>"
         "<text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>\n",
         left, ly, left + 25, colour, s.dashed ? " stroke-dasharray=\"6,4\"" : "", left + 32, ly + 4,
-        escape(s.label));
+        xml_escape(s.label));
   }
   out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n",
-                     (X(x0) + X(x1)) / 2, h - 12, escape(x_label));
+                     (X(x0) + X(x1)) / 2, h - 12, xml_escape(x_label));
   out += fmt::format(
       "<text x=\"18\" y=\"{0:.1f}\" text-anchor=\"middle\" transform=\"rotate(-90 18 "
       "{0:.1f})\">{1}</text>\n",
-      (Y(y0) + Y(y1)) / 2, escape(y_label));
+      (Y(y0) + Y(y1)) / 2, xml_escape(y_label));
   return out + "</svg>\n";
 }
 

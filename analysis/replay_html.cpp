@@ -5,35 +5,14 @@
 #include <algorithm>
 #include <iterator>
 
+#include "analysis/xml_escape.hpp"
+
 namespace covsim {
 
 namespace {
 
 void append_point(std::string& out, Vec2 p) {
   fmt::format_to(std::back_inserter(out), "[{:.7g},{:.7g}]", p.x, p.y);
-}
-
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 // The data as a JavaScript object literal: rings, bounds, and frames of
@@ -69,7 +48,7 @@ std::string data_literal(const RunFiles& run, std::size_t max_frames) {
   fmt::format_to(std::back_inserter(out), "],\"lo\":[{},{}],\"hi\":[{},{}],\"robots\":{},", b.lo.x,
                  b.lo.y, b.hi.x, b.hi.y, n);
   fmt::format_to(std::back_inserter(out), "\"title\":\"{}\",\"times\":[",
-                 html_escape(run.scenario.source));
+                 xml_escape(run.scenario.source));
   const std::size_t stride =
       frames.size() <= max_frames ? 1 : (frames.size() + max_frames - 2) / (max_frames - 1);
   std::vector<std::size_t> keep;

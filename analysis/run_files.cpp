@@ -51,10 +51,9 @@ Vec2 point(const JsonValue& v) {
 
 PlanStatus status_named(const JsonValue& v) {
   const std::string s = v.one_of({"moving", "reached", "projected", "stalled"});
-  return s == "moving"      ? PlanStatus::moving
-         : s == "reached"   ? PlanStatus::reached
-         : s == "projected" ? PlanStatus::projected
-                            : PlanStatus::stalled;
+  for (PlanStatus p : {PlanStatus::moving, PlanStatus::reached, PlanStatus::projected})
+    if (to_string(p) == s) return p;
+  return PlanStatus::stalled;
 }
 
 }  // namespace
@@ -68,22 +67,13 @@ nlohmann::json portable_scenario(const Scenario& scenario, const fs::path& dir) 
   return j;
 }
 
-std::vector<std::vector<Vec2>> RunFiles::real_paths() const {
-  std::vector<std::vector<Vec2>> paths(outcome.robots.size());
+std::vector<std::vector<Vec2>> RunFiles::paths(Vec2 TrajectoryRow::*point) const {
+  std::vector<std::vector<Vec2>> out(outcome.robots.size());
   for (const TrajectoryRow& r : trajectory) {
-    auto& p = paths.at(r.robot);
-    if (p.empty() || !(p.back() == r.position)) p.push_back(r.position);
+    auto& p = out.at(r.robot);
+    if (p.empty() || !(p.back() == r.*point)) p.push_back(r.*point);
   }
-  return paths;
-}
-
-std::vector<std::vector<Vec2>> RunFiles::virtual_paths() const {
-  std::vector<std::vector<Vec2>> paths(outcome.robots.size());
-  for (const TrajectoryRow& r : trajectory) {
-    auto& p = paths.at(r.robot);
-    if (p.empty() || !(p.back() == r.virtual_generator)) p.push_back(r.virtual_generator);
-  }
-  return paths;
+  return out;
 }
 
 RunFiles read_run_files(const fs::path& dir) {

@@ -23,8 +23,13 @@ struct RunFiles {
   std::vector<TrajectoryRow> trajectory;
   std::vector<MetricsSample> samples;  // the cost columns of metrics.csv
   // Each robot's path and its virtual generator's, as RunRecorder keeps them.
-  std::vector<std::vector<Vec2>> real_paths() const;
-  std::vector<std::vector<Vec2>> virtual_paths() const;
+  std::vector<std::vector<Vec2>> real_paths() const { return paths(&TrajectoryRow::position); }
+  std::vector<std::vector<Vec2>> virtual_paths() const {
+    return paths(&TrajectoryRow::virtual_generator);
+  }
+
+ private:
+  std::vector<std::vector<Vec2>> paths(Vec2 TrajectoryRow::*point) const;
 };
 
 // The scenario as a run folder keeps it: the scenario's JSON with files it names made

@@ -108,8 +108,7 @@ SweepResult execute(const SweepSpec& spec, const SweepRun& run) {
     r.target_outside_steps = static_cast<double>(o.target_outside_steps);
     r.stalled_time = o.stalled_time;
     r.centroid_distance = o.centroid_distance_mean;
-    r.planner_step_time =
-        o.planner_steps > 0 ? 1e6 * o.planner_seconds / static_cast<double>(o.planner_steps) : 0.0;
+    r.planner_step_time = o.planner_step_time_us();
     r.fingerprint = Fingerprint::to_hex(o.fingerprint);
   } catch (const std::exception& e) {
     r.error = e.what();

@@ -35,7 +35,6 @@ std::vector<Vec2> shorten(const Environment& env, const std::vector<Vec2>& path)
 }  // namespace
 
 std::optional<std::vector<Vec2>> GridAStar::plan(Vec2 start, Vec2 goal) {
-  expanded_ = 0;
   if (env_.segment_inside(start, goal)) return std::vector<Vec2>{start, goal};
   const OccupancyGrid& g = *grid_;
   const auto s = g.nearest_free(start), t = g.nearest_free(goal);
@@ -57,7 +56,6 @@ std::optional<std::vector<Vec2>> GridAStar::plan(Vec2 start, Vec2 goal) {
     open.pop();
     if (closed[c] != 0) continue;
     closed[c] = 1;
-    ++expanded_;
     if (c == *t) break;
     const std::int32_t ci = g.column(c), cj = g.row(c);
     for (std::int32_t dj = -1; dj <= 1; ++dj) {

@@ -21,13 +21,10 @@ class GridAStar final : public MapPlanner {
   GridAStar(const Environment& env, std::shared_ptr<const OccupancyGrid> grid)
       : MapPlanner(env), grid_(std::move(grid)) {}
   std::string_view name() const override { return "grid_astar"; }
-  // Cells A* expanded for the last plan (for benchmarks).
-  std::size_t expanded() const { return expanded_; }
 
  private:
   std::optional<std::vector<Vec2>> plan(Vec2 start, Vec2 goal) override;
   std::shared_ptr<const OccupancyGrid> grid_;
-  std::size_t expanded_ = 0;
 };
 
 // The worst-case path length the grid planner promises for a shortest path of length

@@ -15,8 +15,6 @@ class MapPlanner : public Planner {
  public:
   void set_goal(Vec2 goal) override;
   PlanStep step(const SensorReading& reading, double max_step) override;
-  // The path planned for the current goal (empty before the first step).
-  const std::vector<Vec2>& path() const { return follower_.path(); }
 
  protected:
   explicit MapPlanner(const Environment& env) : env_(env) {}

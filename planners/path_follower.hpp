@@ -15,7 +15,6 @@ class PathFollower {
   void assign(std::vector<Vec2> path);
   void clear() { path_.clear(), next_ = 0; }
   bool empty() const { return path_.empty(); }
-  const std::vector<Vec2>& path() const { return path_; }
   // Whether the last waypoint has been reached.
   bool done() const { return next_ >= path_.size(); }
   // The point at most max_step from `position` along the path (the robot may lag behind

@@ -41,13 +41,6 @@ VisibilityGraph::VisibilityGraph(const Environment& env) : env_(env) {
   }
 }
 
-std::size_t VisibilityGraph::link_count() const {
-  std::size_t n = 0;
-  for (const auto& l : links_)
-    n += l.size();
-  return n / 2;
-}
-
 std::vector<VisibilityGraph::Link> VisibilityGraph::visible_from(Vec2 p) const {
   std::vector<Link> out;
   for (std::uint32_t v = 0; v < vertices_.size(); ++v) {
@@ -111,12 +104,10 @@ GeodesicTree VisibilityGraph::tree(Vec2 source) const {
   t.source = source;
   t.distance.assign(vertices_.size(), kInf);
   t.first.assign(vertices_.size(), kNone);
-  t.visible.assign(vertices_.size(), 0);
   OpenQueue open;
   for (const Link& l : visible_from(source)) {
     t.distance[l.to] = l.length;
     t.first[l.to] = l.to;
-    t.visible[l.to] = 1;
     open.push({l.length, l.to});
   }
   std::vector<std::uint8_t> closed(vertices_.size(), 0);

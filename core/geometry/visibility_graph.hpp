@@ -22,9 +22,8 @@ struct GeodesicPath {
 // each shortest path (what a robot at the source heads for first).
 struct GeodesicTree {
   Vec2 source;
-  std::vector<double> distance;       // per vertex; infinite if unreachable
-  std::vector<std::uint32_t> first;   // per vertex: the vertex the path leaves the source to
-  std::vector<std::uint8_t> visible;  // per vertex: seen straight from the source
+  std::vector<double> distance;      // per vertex; infinite if unreachable
+  std::vector<std::uint32_t> first;  // per vertex: the vertex the path leaves the source to
 };
 
 class VisibilityGraph {
@@ -40,7 +39,6 @@ class VisibilityGraph {
     double length;
   };
   const std::vector<Link>& links(std::uint32_t v) const { return links_[v]; }
-  std::size_t link_count() const;
 
   // The vertices seen from p (segment p -> vertex in Ω), with their distances.
   std::vector<Link> visible_from(Vec2 p) const;
