@@ -40,8 +40,8 @@ double settling_time(const std::vector<std::pair<double, double>>& series, doubl
   return t;
 }
 
-CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observer,
-                             TraceSink* trace) {
+CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observer, TraceSink* trace,
+                             const PlannerMaker& make_planner) {
   if (scenario.robot_positions.empty()) {
     throw ScenarioError(scenario.source +
                         ": $: missing required key \"robots\" (a run needs robots)");
@@ -52,7 +52,7 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
   Kernel kernel(*scenario.seed);
   if (trace != nullptr) kernel.attach_trace(trace);
   CoverageController controller(kernel, *scenario.environment, *scenario.density,
-                                scenario.robot_positions, scenario.coverage);
+                                scenario.robot_positions, scenario.coverage, make_planner);
   CostSampler sampler(observer);
   controller.set_observer(&sampler);
   controller.start();
@@ -63,7 +63,11 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
   out.scenario = scenario.source;
   out.converged = controller.converged();
   out.sim_time = kernel.now();
-  out.stop_reason = out.converged ? "converged" : controller.stuck() ? "stuck" : "max_time";
+  out.planner_failure = controller.planner_failure();
+  out.stop_reason = out.converged         ? "converged"
+                    : out.planner_failure ? "planner_failure"
+                    : controller.stuck()  ? "stuck"
+                                          : "max_time";
   out.events = kernel.events_dispatched();
   out.seed = *scenario.seed;
   const VoronoiPartition& last = controller.real_partition();

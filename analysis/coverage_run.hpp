@@ -3,6 +3,7 @@
 // limit), and what it ends with: the final positions, the three costs of the paper's
 // Remark 1, and the fingerprint.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,10 @@ struct CoverageOutcome {
   std::string scenario;  // the scenario's source (its file name)
   bool converged = false;
   SimTime sim_time;
-  std::string stop_reason;  // "converged", "stuck" (see CoverageController::stuck) or "max_time"
+  // "converged", "planner_failure" (see PlannerFailure), "stuck" (see
+  // CoverageController::stuck) or "max_time".
+  std::string stop_reason;
+  std::optional<PlannerFailure> planner_failure;
   std::uint64_t events = 0;
   std::uint64_t seed = 0;
   std::uint64_t fingerprint = 0;
@@ -62,7 +66,8 @@ struct CoverageOutcome {
 double settling_time(const std::vector<std::pair<double, double>>& series, double fraction);
 
 // Throws ScenarioError if the scenario has no robots or no seed.
+// make_planner, if given, builds each robot's planner instead of the scenario's.
 CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observer = nullptr,
-                             TraceSink* trace = nullptr);
+                             TraceSink* trace = nullptr, const PlannerMaker& make_planner = {});
 
 }  // namespace covsim

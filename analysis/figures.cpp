@@ -72,9 +72,9 @@ std::string scene_svg(const Scenario& scenario, const CoverageOutcome& outcome,
     virt.push_back(r.virtual_generator);
     real.push_back(r.position);
   }
-  const auto share = VoronoiPartition::Coincident::share;  // robots at one place share a cell
-  const VoronoiPartition virtual_partition(integrator, virt, share);
-  const VoronoiPartition real_partition(integrator, real, share);
+  const auto split = VoronoiPartition::Coincident::split;  // as the controller splits them
+  const VoronoiPartition virtual_partition(integrator, virt, split);
+  const VoronoiPartition real_partition(integrator, real, split);
   const double line = std::max(1.0, unit / 400);
   svg.raw("<g style=\"clip-path:url(#omega)\">\n");
   for (const auto& c : cell_rings(virtual_partition)) {

@@ -54,6 +54,15 @@ std::string final_json(const CoverageOutcome& o) {
   planner["step_time_us"] = o.planner_step_time_us();
   j["planner"] = std::move(planner);
   j["stop_reason"] = o.stop_reason;
+  if (o.planner_failure) {
+    const PlannerFailure& f = *o.planner_failure;
+    j["planner_failure"] = {{"robot", f.robot},
+                            {"time", f.time.seconds()},
+                            {"goal", {f.goal.x, f.goal.y}},
+                            {"position", {f.position.x, f.position.y}}};
+  } else {
+    j["planner_failure"] = nullptr;
+  }
   j["events"] = o.events;
   j["seed"] = o.seed;
   return j.dump(2) + "\n";

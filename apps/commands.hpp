@@ -8,6 +8,7 @@ namespace covsim::app {
 void add_cells_command(CLI::App& app);
 void add_kernel_demo_command(CLI::App& app);
 void add_merge_command(CLI::App& app);
+void add_planner_contract_command(CLI::App& app);
 void add_plot_command(CLI::App& app);
 void add_random_env_command(CLI::App& app);
 void add_replay_command(CLI::App& app);

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   covsim::app::add_cells_command(app);
   covsim::app::add_kernel_demo_command(app);
   covsim::app::add_merge_command(app);
+  covsim::app::add_planner_contract_command(app);
   covsim::app::add_plot_command(app);
   covsim::app::add_random_env_command(app);
   covsim::app::add_replay_command(app);

@@ -97,6 +97,14 @@ void add_run_command(CLI::App& app) {
     fmt::print("cost: virtual {:.6g}, real {:.6g}, real in virtual partition {:.6g}\n",
                outcome.cost_virtual, outcome.cost_real, outcome.cost_real_in_virtual_partition);
     fmt::print("fingerprint {}\n", Fingerprint::to_hex(outcome.fingerprint));
+    if (const auto& f = outcome.planner_failure) {
+      // The results rest on the planner's promise; a broken promise fails the run.
+      throw std::runtime_error(fmt::format(
+          "planner failure: robot {} at t = {} s declared its goal ({}, {}), which lies in Ω, "
+          "unreachable (it stood at ({}, {})); see {}/final.json",
+          f->robot, f->time.seconds(), f->goal.x, f->goal.y, f->position.x, f->position.y,
+          dir.string()));
+    }
     fmt::print(
         "wrote {0}/scenario.json, {0}/final.json, {0}/trajectory.csv, {0}/metrics.csv, "
         "{0}/scene.svg, {0}/cost.svg\n",

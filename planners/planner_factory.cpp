@@ -34,6 +34,7 @@ std::unique_ptr<Planner> PlannerFactory::make() {
     TangentBugParams p = TangentBugParams::for_environment(env_.diameter(), boundary);
     // A decrease smaller than the sensor's noise is no progress: three standard deviations.
     p.progress = std::max(p.progress, 3.0 * sensor_.noise_sigma);
+    p.noise_margin = 3.0 * sensor_.noise_sigma;
     return std::make_unique<TangentBug>(p);
   }
   if (t == "potential_field") {

@@ -11,6 +11,8 @@ SensorReading sense(const Environment& env, Vec2 p, double range) {
   r.visible = visible_boundary(env, p, range);
   for (const VisiblePiece& piece : r.visible.pieces)
     r.piece_rings.push_back(env.boundary()[piece.edge].ring);
+  for (std::uint32_t e : r.visible.discontinuity_edges)
+    r.discontinuity_rings.push_back(env.boundary()[e].ring);
   r.contacts = contacts_at(env, p);
   return r;
 }

@@ -21,8 +21,10 @@ struct SensorReading {
   double range = 0.0;  // may be infinite
   VisibleBoundary visible;
   std::vector<ContactEdge> contacts;
-  // Which obstacle each visible piece belongs to (parallel to visible.pieces).
+  // Which obstacle each visible piece, and each discontinuity point, belongs to (parallel to
+  // visible.pieces and visible.discontinuities).
   std::vector<std::uint32_t> piece_rings;
+  std::vector<std::uint32_t> discontinuity_rings;
 };
 
 // A reading taken in the environment at p: what an ideal range and contact sensor report.

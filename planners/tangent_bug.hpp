@@ -1,112 +1,124 @@
 #pragma once
-// TangentBug (Kamon, Rivlin and Rimon, 1998) over a range sensor of any range R (0 for a
-// contact sensor, finite, or infinite), extended as in Breitenmoser et al. (2010, Sec.
-// III-A) with target projection: a goal inside an obstacle is found unreachable after one
-// full loop around that obstacle, and the robot then drives along the boundary to the
-// recorded closest boundary point.
+// TangentBug (Kamon, Rivlin and Rimon, IJRR 1998) over a range sensor of any range R (0 for a
+// contact sensor, finite, or infinite), with the target projection of Breitenmoser et al.
+// (2010, Sec. III-A): a goal that lies inside an obstacle is found unreachable by walking
+// once round that obstacle, and the robot then settles at the obstacle's point closest to
+// the goal. docs/tangent_bug.md sets the code beside the algorithm, line by line.
 //
-// Behaviours:
-// - Motion to goal: straight at the goal while nothing sensed blocks the way within R;
-//   otherwise toward the discontinuity point O minimising d(x, O) + d(O, goal), as long as
-//   that heuristic distance keeps decreasing (by at least `progress`).
-// - Boundary following, when it stops decreasing: along the blocking obstacle's boundary,
-//   in the direction of the last point headed for. d_followed is the smallest distance to
-//   the goal of any point of that obstacle sensed for this goal; the robot leaves as soon as
-//   a visible point (a discontinuity point, a point of another obstacle, or the free point
-//   straight toward the goal) is closer than d_followed by at least `progress`. d_followed
-//   is kept per obstacle for the whole goal and lowered to the distance of each leave point,
-//   so every leave must beat the one before: the robot cannot chatter or cycle.
-//   Following starts at the closest point of the sensed piece that blocks the way.
-// - Back at the point where following began without having left: the goal is unreachable.
-//   The robot takes the shorter way along the boundary to the closest point (the
-//   projection), and reports `projected`.
+// - Motion to goal: toward the node of the local tangent graph (the goal, when the way to it
+//   is free within R, or a discontinuity point O) with the least heuristic distance
+//   d(x, O) + d(O, goal), for as long as that distance does not increase. When it would
+//   increase, the robot is at a local minimum: it drives toward the goal until it touches
+//   the obstacle in the way and follows that obstacle's boundary.
+// - Boundary following: along the blocking obstacle, in the direction that continues the
+//   motion. d_followed is the least distance to the goal of the followed obstacle's sensed
+//   boundary since this episode began (starting with where it began); d_reach that of the
+//   visible free region. The robot leaves toward the d_reach point as soon as
+//   d_reach < d_followed, then resumes motion to goal. Every node it heads for afterwards,
+//   until the next leave, must be closer to the goal than that d_followed: the distance at
+//   which boundary following starts falls strictly from one episode to the next, so the
+//   robot never returns to an obstacle it left and the episodes end (this is what keeps it
+//   from leaving an obstacle only to head for that obstacle's corner again).
+// - Back at the point where this episode began, without having left: a loop. The ring is
+//   now known exactly; it encloses the goal (the goal lies inside that obstacle, or outside
+//   the outer boundary), so the goal is unreachable: the robot walks the shorter way to the
+//   ring's point closest to the goal (the projection) and reports `projected`. A loop round a
+//   ring that does not enclose the goal cannot happen in exact arithmetic (at the ring's
+//   point closest to the goal the way toward it is free, so the robot leaves there); should
+//   rounding or range noise hide that leave, the robot walks to that point and resumes
+//   motion to goal from it (counted in `recoveries`), so a reachable goal is never declared
+//   unreachable.
 //
-// A new goal restarts motion to goal from the current position. What the robot learned by
-// circling an obstacle completely stays in memory: an unreachable goal inside an obstacle
-// it has circled is projected at once, without another loop. Every goal ends: a path longer
-// than `path_budget`, or proposing to stay put for more than 20 steps in a row, reports
-// `stalled`. To get onto an obstacle the robot drives toward it until touching it, so a
-// sensed point that noise put short of the wall does not hold it up.
+// What was learned by walking round an obstacle stays across goals: a later goal inside it
+// is projected as soon as the robot touches it. A new goal restarts motion to goal from
+// where the robot stands. Every goal ends: a path longer than `path_budget`, or 20 steps in
+// a row without moving, reports `stalled` (never expected for TangentBug: the planner
+// contract suite checks it does not happen).
+#include <cstdint>
 #include <limits>
-#include <map>
 #include <optional>
 #include <vector>
 
+#include "planners/obstacle_memory.hpp"
 #include "planners/planner.hpp"
 
 namespace covsim {
 
 struct TangentBugParams {
-  double tolerance = 1e-6;   // arrival, and being on the boundary
+  // Arrival, and touching the boundary: must be the environment's contact tolerance, so that
+  // a wall the planner counts as touched is one the contact sensor reports.
+  double tolerance = 1e-9;
   double progress = 1e-9;    // the least decrease that counts as progress
   double path_budget = 1e3;  // the longest path for one goal
-  // Defaults scaled to an environment: tolerance 1e-6 and progress 1e-9 of its diameter, a
-  // path budget of four times its total boundary length plus its diameter.
+  // Added to every sensed distance of the followed obstacle: range noise makes the nearest
+  // of many noisy points look closer than the obstacle is.
+  double noise_margin = 0.0;
+  // Defaults scaled to an environment: tolerance and progress 1e-9 of its diameter, a
+  // path budget of ten times its total boundary length plus its diameter.
   static TangentBugParams for_environment(double diameter, double boundary_length);
 };
 
 class TangentBug final : public Planner {
  public:
-  explicit TangentBug(TangentBugParams params) : p_(params) {}
+  explicit TangentBug(TangentBugParams params) : p_(params), memory_(params.tolerance) {}
   std::string_view name() const override { return "tangent_bug"; }
   void set_goal(Vec2 goal) override;
   PlanStep step(const SensorReading& reading, double max_step) override;
 
-  enum class Mode { to_goal, to_boundary, follow, to_projection, done };
+  enum class Mode { motion_to_goal, approach, follow, leave, to_projection, to_closest, done };
   Mode mode() const { return mode_; }
+  // For the current goal: the ring followed in each boundary-following episode, the loops
+  // closed, and the loops closed round a ring that did not enclose the goal.
+  const std::vector<std::uint32_t>& episodes() const { return episodes_; }
+  std::uint32_t loops() const { return loops_; }
+  // For the current goal: the obstacles it steered round (headed for a point of) in motion
+  // to goal or followed, each once, in increasing order.
+  const std::vector<std::uint32_t>& engaged() const { return engaged_; }
+  std::uint32_t recoveries() const { return recoveries_; }
 
  private:
-  struct RingMemory {
-    std::map<std::uint32_t, std::pair<Vec2, Vec2>> edges;  // by index in the ring
-    std::uint32_t size = 0;                                // known once circled
-    bool complete() const { return size > 0 && edges.size() == size; }
-  };
-  struct Free {
-    double distance;                       // free travel along the direction, within range
-    std::optional<std::uint32_t> blocker;  // the ring that blocks, if any
-    std::optional<std::size_t> piece;      // the sensed piece that blocks, if any
-  };
-
-  PlanStep motion_to_goal(const SensorReading& r, double max_step);
-  PlanStep begin_following(const SensorReading& r, double max_step, const Free& blocked);
-  PlanStep follow(const SensorReading& r, double max_step);
-  PlanStep to_projection(const SensorReading& r, double max_step);
-  PlanStep go_to_projection(const SensorReading& r, double max_step, std::uint32_t ring);
+  using Decision = std::optional<PlanStep>;  // nullopt: the mode changed, decide again
+  Decision motion_to_goal(const SensorReading& r, double max_step);
+  Decision approach(const SensorReading& r, double max_step);
+  Decision begin_following(const SensorReading& r, std::uint32_t ring);
+  Decision follow(const SensorReading& r, double max_step);
+  Decision leave(const SensorReading& r, double max_step);
+  Decision loop_closed(const SensorReading& r);
+  Decision walk_to(const SensorReading& r, std::uint32_t ring, Mode mode);
+  Decision walk_on(const SensorReading& r, double max_step);
+  // The next point along the followed ring in dir_, stopping at the edge's end, at the
+  // edge's point closest to the goal, and at `stop` if it lies ahead on this edge.
+  PlanStep walk(const SensorReading& r, double max_step, std::optional<Vec2> stop);
+  PlanStep move_toward(Vec2 x, Vec2 p, double max_step);
   PlanStep finish(Vec2 at, PlanStatus s);
-  PlanStep move(const SensorReading& r, Vec2 next, PlanStatus s = PlanStatus::moving);
-
-  Free free_distance(const SensorReading& r, Vec2 u, double limit) const;
-  // The contact edge to walk along in direction dir (+1 along the ring, -1 against it).
-  std::optional<ContactEdge> walking_edge(const SensorReading& r, int dir) const;
-  void remember(const ContactEdge& e);
-  bool goal_inside(std::uint32_t ring) const;
-  // The closest point of a circled ring to the goal, and the index of its edge.
-  std::pair<Vec2, std::uint32_t> closest_on_ring(std::uint32_t ring) const;
-  // Distance along a circled ring from x (on edge i) to q (on edge j) in direction dir.
-  double arc(std::uint32_t ring, Vec2 x, std::uint32_t i, Vec2 q, std::uint32_t j, int dir) const;
+  void resume_motion_to_goal();
 
   TangentBugParams p_;
+  ObstacleMemory memory_;
   Vec2 goal_;
-  bool has_goal_ = false;
   Mode mode_ = Mode::done;
   PlanStatus status_ = PlanStatus::reached;
-  double path_ = 0.0;
-  double h_prev_ = std::numeric_limits<double>::infinity();
-  std::optional<Vec2> heading_;  // the last point headed for in motion to goal
+  // Motion to goal.
+  double h_prev_ = std::numeric_limits<double>::infinity();  // heuristic distance last step
+  double bound_ = std::numeric_limits<double>::infinity();   // d_followed at the last leave
+  std::optional<Vec2> heading_;                              // the node last headed for
   // Boundary following.
   std::uint32_t ring_ = 0;
   int dir_ = 1;
   Vec2 start_;
-  bool left_start_ = false;
-  std::uint32_t start_edge_ = 0;
-  Vec2 boundary_direction_;
+  double walked_ = 0.0;
+  double d_followed_ = 0.0;
+  Vec2 leave_to_;
+  RingPoint target_;  // to_projection and to_closest
+  // Bookkeeping for the goal.
+  double path_ = 0.0;
+  std::optional<Vec2> last_position_;
   static constexpr int kMaxIdleSteps = 20;
   int idle_steps_ = 0;
-  std::map<std::uint32_t, double> followed_min_;  // per ring, for this goal
-  // Projection.
-  Vec2 projection_;
-  std::uint32_t projection_edge_ = 0;
-  std::map<std::uint32_t, RingMemory> memory_;
+  std::vector<std::uint32_t> episodes_;
+  std::vector<std::uint32_t> engaged_;
+  void engage(std::uint32_t ring);
+  std::uint32_t loops_ = 0, recoveries_ = 0;
 };
 
 }  // namespace covsim

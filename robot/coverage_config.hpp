@@ -23,6 +23,16 @@ struct NetworkConfig {
   SimTime broadcast_period = SimTime::from_ns(100'000'000);  // 0.1 s
   bool random_phase = false;         // each robot's first broadcast at a random offset
   std::optional<SimTime> staleness;  // entries older than this are dropped; unset: never
+  // Algorithm 1 acquires the neighbours (line 3) before its first Lloyd step: robots
+  // broadcast from the start, and each runs its first loop 1 `acquire` later (unset: one
+  // broadcast period). A robot that has heard nobody by then waits for its first message,
+  // up to `acquire_timeout` after the start (unset: ten broadcast periods), then goes alone.
+  std::optional<SimTime> acquire;
+  std::optional<SimTime> acquire_timeout;
+  SimTime acquire_time() const { return acquire.value_or(broadcast_period); }
+  SimTime acquire_deadline() const {
+    return acquire_timeout.value_or(SimTime::from_ns(10 * broadcast_period.ns()));
+  }
 };
 
 // Which targets loop 1 hands the planners.

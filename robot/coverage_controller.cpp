@@ -31,7 +31,7 @@ std::string_view to_string(ControllerKind k) {
 
 CoverageController::CoverageController(Kernel& kernel, const Environment& env,
                                        const Density& density, const std::vector<Vec2>& starts,
-                                       CoverageConfig config)
+                                       CoverageConfig config, const PlannerMaker& make_planner)
     : kernel_(kernel),
       env_(env),
       integrator_(env, density),
@@ -45,7 +45,7 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
     r.id = i;
     r.position = r.virtual_generator = r.virtual_target = r.real_target = r.goal = r.assigned =
         starts[i];
-    r.planner = planners_.make();
+    r.planner = make_planner ? make_planner(i) : planners_.make();
     robots_.push_back(std::move(r));
   }
   if (config_.controller.kind == ControllerKind::geodesic_lloyd) {
@@ -96,12 +96,15 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
 }
 
 void CoverageController::start() {
-  const SimTime t0 = kernel_.now();
+  const SimTime t0 = t0_ = kernel_.now();
+  // Decentralized, the first loop 1 waits for the first round of broadcasts.
+  const SimTime first = channel_ ? t0 + config_.network.acquire_time() : t0;
+  acquired_.assign(robots_.size(), channel_ == nullptr);
   for (std::uint32_t i = 0; i < robots_.size(); ++i) {
     if (config_.mode == LoopMode::classic) {
-      kernel_.schedule_at(t0, loop1_kind_, i, kLoop1);
+      kernel_.schedule_at(first, loop1_kind_, i, kLoop1);
     } else {
-      kernel_.schedule_periodic(Period::from_ns(config_.loop1_period.ns()), t0, loop1_kind_, i,
+      kernel_.schedule_periodic(Period::from_ns(config_.loop1_period.ns()), first, loop1_kind_, i,
                                 kLoop1);
     }
     // A loop-2 step at time t is the motion over (t - period, t]: the first ends at t0 + period.
@@ -150,7 +153,7 @@ std::vector<Vec2> CoverageController::virtual_generators() const {
 const VoronoiPartition& CoverageController::virtual_partition() {
   if (!virtual_partition_) {
     virtual_partition_ = std::make_unique<VoronoiPartition>(integrator_, virtual_generators(),
-                                                            VoronoiPartition::Coincident::share);
+                                                            VoronoiPartition::Coincident::split);
   }
   return *virtual_partition_;
 }
@@ -158,7 +161,7 @@ const VoronoiPartition& CoverageController::virtual_partition() {
 const VoronoiPartition& CoverageController::real_partition() {
   if (!real_partition_) {
     real_partition_ = std::make_unique<VoronoiPartition>(integrator_, positions(),
-                                                         VoronoiPartition::Coincident::share);
+                                                         VoronoiPartition::Coincident::split);
   }
   return *real_partition_;
 }
@@ -169,13 +172,34 @@ const GeodesicPartition& CoverageController::geodesic_partition() {
   return *geodesic_partition_;
 }
 
-std::vector<Vec2> CoverageController::known_generators(std::uint32_t i, bool positions) const {
-  std::vector<Vec2> known{positions ? robots_[i].position : robots_[i].virtual_generator};
-  for (const auto& [sender, m] : tables_[i].entries()) {
-    const Vec2 g = positions ? m.position : m.virtual_generator;
-    if (std::find(known.begin(), known.end(), g) == known.end()) known.push_back(g);
+CoverageController::Known CoverageController::known_generators(std::uint32_t i,
+                                                               bool positions) const {
+  Known known;
+  const Vec2 own = positions ? robots_[i].position : robots_[i].virtual_generator;
+  bool placed = false;
+  for (const auto& [sender, m] : tables_[i].entries()) {  // by sender id
+    if (!placed && sender > i) {
+      known.self = known.points.size();
+      known.points.push_back(own);
+      placed = true;
+    }
+    known.points.push_back(positions ? m.position : m.virtual_generator);
+  }
+  if (!placed) {
+    known.self = known.points.size();
+    known.points.push_back(own);
   }
   return known;
+}
+
+bool CoverageController::acquiring(std::uint32_t i) {
+  if (acquired_[i]) return false;
+  const SimTime now = kernel_.now();
+  if (now < t0_ + config_.network.acquire_time()) return true;
+  // Nobody heard yet: wait for a first message, up to the deadline.
+  if (tables_[i].size() == 0 && now < t0_ + config_.network.acquire_deadline()) return true;
+  acquired_[i] = true;
+  return false;
 }
 
 CellSummary CoverageController::own_cell(std::uint32_t i, ConvexPolygon* cell) {
@@ -185,17 +209,11 @@ CellSummary CoverageController::own_cell(std::uint32_t i, ConvexPolygon* cell) {
     if (cell != nullptr) cell->assign(p.cell(i).begin(), p.cell(i).end());
     return p.summary(i);
   }
-  // Decentralized: the Delaunay neighbours among the generators robot i has heard of (its
-  // own first, then by robot id; one that sits exactly on another is left out).
-  const std::vector<Vec2> known = known_generators(i, false);
-  std::vector<Vec2> neighbors;
-  if (known.size() > 1) {
-    const DelaunayNeighbors nb = delaunay_neighbors(known);
-    for (std::uint32_t k = nb.start[0]; k < nb.start[1]; ++k)
-      neighbors.push_back(known[nb.index[k]]);
-  }
+  // Decentralized: the cell among the generators robot i has heard of, computed as the
+  // centralized partition computes it.
+  const Known known = known_generators(i, false);
   ConvexPolygon local;
-  integrator_.cell(g, neighbors, local);
+  voronoi_cell(integrator_, known.points, known.self, local);
   const CellSummary s = summarize(integrator_.integrate(local, g), g);
   if (cell != nullptr) *cell = std::move(local);
   return s;
@@ -286,6 +304,7 @@ NetworkSample CoverageController::network_sample() {
 }
 
 void CoverageController::loop1(std::uint32_t i) {
+  if (channel_ && acquiring(i)) return;
   // Algorithm 1, lines 3-5: the cell of the virtual generator among those the robot knows
   // of, and its centroid.
   if (channel_ && config_.network.staleness)
@@ -296,14 +315,20 @@ void CoverageController::loop1(std::uint32_t i) {
   // Algorithm 2, lines 2-4: an obstacle boundary Voronoi region projects its target.
   r.projected = !env_.contains(r.virtual_target);
   r.real_target = r.projected ? env_.closest_point(r.virtual_target) : r.virtual_target;
-  r.stable = is_settled(r.status) && distance(r.real_target, r.position) <= position_tol_ &&
+  // At its real target: for a projected target, at a closest point of Ω to the virtual one
+  // (when several are equally close, the planner's is as good as the controller's).
+  const bool at_target = r.projected
+                             ? std::fabs(distance(r.position, r.virtual_target) -
+                                         distance(r.real_target, r.virtual_target)) <= position_tol_
+                             : distance(r.real_target, r.position) <= position_tol_;
+  r.stable = is_settled(r.status) && at_target &&
              (!paper || distance(r.virtual_target, r.virtual_generator) <= virtual_tol_);
   if (r.stable) return;
-  // A target that moved less than the position tolerance does not restart the planner:
-  // otherwise periodic updates could keep a robot from ever getting round an obstacle. A
-  // robot stalled short of an unchanged target stays stalled: trying again would fail again.
-  const bool moved = distance(r.virtual_target, r.assigned) > position_tol_;
-  if (moved || (is_settled(r.status) && r.status != PlanStatus::stalled)) {
+  // Only a target that moved (by more than the position tolerance) restarts the planner: a
+  // goal it reached, found unreachable or gave up on is never handed to it again (it would
+  // only do the same again), and periodic updates cannot keep restarting a robot on its way
+  // round an obstacle.
+  if (distance(r.virtual_target, r.assigned) > position_tol_) {
     set_goal(r, r.virtual_target);
     r.assigned = r.virtual_target;
   }
@@ -319,15 +344,16 @@ Vec2 CoverageController::baseline_target(std::uint32_t i) {
   const bool geodesic = config_.controller.kind == ControllerKind::geodesic_lloyd;
   if (geodesic) {
     const Vec2 p = robots_[i].position;
-    const Vec2 t =
-        !channel_ ? geodesic_partition().cell(i).target
-                  : GeodesicPartition(*lattice_points_, known_generators(i, true)).cell(0).target;
-    return p + config_.controller.gain * (t - p);
+    if (!channel_) return p + config_.controller.gain * (geodesic_partition().cell(i).target - p);
+    const Known known = known_generators(i, true);
+    return p + config_.controller.gain *
+                   (GeodesicPartition(*lattice_points_, known.points).cell(known.self).target - p);
   }
   if (!channel_) return real_partition().summary(i).centroid;
-  const std::vector<Vec2> known = known_generators(i, true);
-  return VoronoiPartition(integrator_, known, VoronoiPartition::Coincident::share)
-      .summary(0)
+  const Known known = known_generators(i, true);
+  ConvexPolygon cell;
+  voronoi_cell(integrator_, known.points, known.self, cell);
+  return summarize(integrator_.integrate(cell, known.points[known.self]), known.points[known.self])
       .centroid;
 }
 
@@ -365,6 +391,11 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     r.position = next;
     r.status = s.status;
     r.stable = false;
+    if (s.status == PlanStatus::projected && env_.contains(r.goal)) {
+      failure_ = PlannerFailure{i, k.now(), r.goal, r.position};
+      k.stop();
+      return;
+    }
     // A planner that gives up on a target outside Ω: the target is unreachable, so the
     // robot goes to its projection instead.
     if (r.status == PlanStatus::stalled && r.projected && !(r.goal == r.real_target)) {

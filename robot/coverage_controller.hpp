@@ -12,9 +12,12 @@
 // target, and a straight step of the virtual generator toward the virtual target as if
 // there were no obstacles; both at most max_speed * loop2_period.
 // In classic mode a robot that has settled runs loop 1 again at the next tick; in periodic
-// mode loop 1 runs every loop1_period. Each tick ends with a check (class 3) that folds all
-// positions into the fingerprint and stops the run when every robot is stable.
-// A motion that would leave Ω is an internal error: it throws.
+// mode loop 1 runs every loop1_period. A planner is given a new goal only when the target
+// has moved (by more than the position tolerance): a goal it has reached, or found
+// unreachable, is never handed to it again, and its budgets are per goal. Decentralized, a
+// robot runs its first loop 1 only once it has heard its neighbours (NetworkConfig::acquire). Each
+// tick ends with a check (class 3) that folds all positions into the fingerprint and stops the run
+// when every robot is stable. A motion that would leave Ω is an internal error: it throws.
 //
 // The baseline controllers (ControllerKind) replace loop 1: euclidean_lloyd targets the
 // centroid of the robot's own cell among the real positions, geodesic_lloyd the geodesic
@@ -25,6 +28,7 @@
 // robot stalled with nothing left to change is stuck; when every robot is converged or
 // stuck, the run stops (stuck()).
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -64,6 +68,14 @@ struct NetworkSample {
   CommGraphMetrics graph;
 };
 
+// A planner that contradicts the environment: it declared a goal inside Ω unreachable. The
+// run stops at once (TangentBug's promise, on which the paper's Lemma 2 rests, is broken).
+struct PlannerFailure {
+  std::uint32_t robot = 0;
+  SimTime time;
+  Vec2 goal, position;
+};
+
 // Hooks for recording a run.
 class CoverageObserver {
  public:
@@ -73,10 +85,14 @@ class CoverageObserver {
   virtual void on_finish(SimTime, CoverageController&) {}  // once, when the run ends
 };
 
+// Builds robot i's planner; unset, the planner the configuration names.
+using PlannerMaker = std::function<std::unique_ptr<Planner>(std::uint32_t robot)>;
+
 class CoverageController {
  public:
   CoverageController(Kernel& kernel, const Environment& env, const Density& density,
-                     const std::vector<Vec2>& starts, CoverageConfig config);
+                     const std::vector<Vec2>& starts, CoverageConfig config,
+                     const PlannerMaker& make_planner = {});
 
   void set_observer(CoverageObserver* o) { observer_ = o; }
   // Schedules loop 1 and loop 2 for every robot, the samples and the checks.
@@ -84,6 +100,7 @@ class CoverageController {
   bool converged() const { return converged_; }
   // The run stopped with robots stalled short of targets that no longer change.
   bool stuck() const { return stuck_; }
+  const std::optional<PlannerFailure>& planner_failure() const { return failure_; }
 
   const std::vector<Robot>& robots() const { return robots_; }
   const CellIntegrator& integrator() const { return integrator_; }
@@ -113,9 +130,17 @@ class CoverageController {
   void loop1(std::uint32_t i);
   // The loop-1 target of a baseline controller for robot i.
   Vec2 baseline_target(std::uint32_t i);
-  // What robot i knows of the others: the virtual generators (or, for the baselines, the
-  // real positions) in its table, its own first; entries on top of another are left out.
-  std::vector<Vec2> known_generators(std::uint32_t i, bool positions) const;
+  // What robot i knows: the virtual generators (or, for the baselines, the real positions)
+  // of itself and of the robots in its table, in robot-id order, and where its own is in
+  // that list (so that generators at one point split their cell as the centralized
+  // partition splits it).
+  struct Known {
+    std::vector<Vec2> points;
+    std::size_t self = 0;
+  };
+  Known known_generators(std::uint32_t i, bool positions) const;
+  // Robot i is still acquiring its neighbours (Algorithm 1, line 3) and runs no loop 1.
+  bool acquiring(std::uint32_t i);
   void set_goal(Robot& r, Vec2 goal);
   void loop2(Kernel& k, std::uint32_t i);
   void check(Kernel& k);
@@ -140,10 +165,13 @@ class CoverageController {
   std::vector<RandomStream> noise_rng_, dropout_rng_;
   bool converged_ = false;
   bool stuck_ = false;
+  std::optional<PlannerFailure> failure_;
+  SimTime t0_;
   // Decentralized operation.
   std::unique_ptr<Channel> channel_;
   std::vector<NeighborTable> tables_;
   std::vector<std::uint64_t> next_seq_;
+  std::vector<bool> acquired_;
   std::vector<StateMessage> in_flight_;  // messages on their way, by slot
   std::vector<std::uint32_t> free_slots_;
   NetworkTotals totals_;

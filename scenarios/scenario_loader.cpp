@@ -106,8 +106,8 @@ SimTime read_period(const JsonValue& v) {
 }
 
 void read_network(const JsonValue& v, NetworkConfig& n) {
-  v.only_keys(
-      {"range", "line_of_sight", "broadcast_period", "random_phase", "staleness", "loss", "delay"});
+  v.only_keys({"range", "line_of_sight", "broadcast_period", "random_phase", "staleness", "acquire",
+               "acquire_timeout", "loss", "delay"});
   if (auto r = v.find("range")) {
     if (!r->is_null()) n.channel.range = r->positive();
   }
@@ -116,6 +116,16 @@ void read_network(const JsonValue& v, NetworkConfig& n) {
   if (auto p = v.find("random_phase")) n.random_phase = p->boolean();
   if (auto s = v.find("staleness")) {
     if (!s->is_null()) n.staleness = read_period(*s);
+  }
+  if (auto a = v.find("acquire")) {
+    const double s = a->non_negative();
+    if (s > 1e6) a->fail(fmt::format("expected at most 1e6 s, found {}", s));
+    n.acquire = SimTime::from_seconds(s);
+  }
+  if (auto a = v.find("acquire_timeout")) {
+    const double s = a->non_negative();
+    if (s > 1e6) a->fail(fmt::format("expected at most 1e6 s, found {}", s));
+    n.acquire_timeout = SimTime::from_seconds(s);
   }
   if (auto loss = v.find("loss")) {
     const std::string model =

@@ -123,6 +123,8 @@ class Expansion {
       if (norm(cur.b - next.a) > tol_) {
         out.discontinuities.push_back(cur.b);
         out.discontinuities.push_back(next.a);
+        out.discontinuity_edges.push_back(cur.edge);
+        out.discontinuity_edges.push_back(next.edge);
       }
     }
     return out;

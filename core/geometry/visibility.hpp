@@ -22,6 +22,8 @@ struct VisibleBoundary {
   // piece's start (an occluding vertex, the point behind it, or where a wall leaves the
   // sensing range). TangentBug's candidate points O_i.
   std::vector<Vec2> discontinuities;
+  // The boundary edge each discontinuity point lies on (parallel to discontinuities).
+  std::vector<std::uint32_t> discontinuity_edges;
 };
 
 // range may be 0 (nothing is sensed), finite, or infinite. Empty if p is not in Ω.

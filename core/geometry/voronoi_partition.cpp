@@ -6,38 +6,75 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "core/geometry/coincident_wedge.hpp"
 #include "core/geometry/delaunay.hpp"
 
 namespace covsim {
+
+namespace {
+// The distinct points among the generators, and for each generator the index of its point,
+// its rank among the generators at that point (in index order) and how many share it.
+struct Coincidence {
+  std::vector<Vec2> distinct;
+  std::vector<std::size_t> point, rank, count;
+};
+
+Coincidence coincidence(std::span<const Vec2> g) {
+  const std::size_t n = g.size();
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::tie(g[a].x, g[a].y, a) < std::tie(g[b].x, g[b].y, b);
+  });
+  Coincidence c;
+  c.point.assign(n, 0);
+  c.rank.assign(n, 0);
+  c.count.assign(n, 1);
+  std::vector<std::size_t> first_of(n);  // the lowest index at each generator's point
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = order[k];
+    const bool repeat = k > 0 && g[i] == g[order[k - 1]];
+    first_of[i] = repeat ? first_of[order[k - 1]] : i;
+    c.rank[i] = repeat ? c.rank[order[k - 1]] + 1 : 0;
+  }
+  // Number the distinct points in index order of their first generator.
+  std::vector<std::size_t> number(n, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (first_of[i] == i) {
+      number[i] = c.distinct.size();
+      c.distinct.push_back(g[i]);
+    }
+  }
+  std::vector<std::size_t> members(c.distinct.size(), 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    c.point[i] = number[first_of[i]];
+    ++members[c.point[i]];
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    c.count[i] = members[c.point[i]];
+  return c;
+}
+
+void cell_of(const CellIntegrator& integrator, const Coincidence& c, const DelaunayNeighbors& nb,
+             std::size_t i, std::vector<Vec2>& neighbors, ConvexPolygon& out) {
+  const std::size_t d = c.point[i];
+  neighbors.clear();
+  for (std::uint32_t k = nb.start[d]; k < nb.start[d + 1]; ++k)
+    neighbors.push_back(c.distinct[nb.index[k]]);
+  integrator.cell(c.distinct[d], neighbors, out);
+  if (c.count[i] > 1) clip_to_wedge(out, c.distinct[d], c.rank[i], c.count[i]);
+}
+}  // namespace
 
 VoronoiPartition::VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
                                    Coincident coincident)
     : generators_(std::move(generators)) {
   const std::size_t n = generators_.size();
-  // With sharing, the Delaunay triangulation is of the distinct generators; first[i] is the
-  // index among them of generator i, or -1 for a repeat of an earlier one.
-  std::vector<Vec2> distinct = generators_;
-  std::vector<std::int64_t> first(n);
-  for (std::size_t i = 0; i < n; ++i)
-    first[i] = static_cast<std::int64_t>(i);
-  if (coincident == Coincident::share) {
-    std::vector<std::size_t> order(n);
-    for (std::size_t i = 0; i < n; ++i)
-      order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      const Vec2 p = generators_[a], q = generators_[b];
-      return std::tie(p.x, p.y, a) < std::tie(q.x, q.y, b);
-    });
-    std::vector<bool> repeat(n, false);
-    for (std::size_t k = 1; k < n; ++k)
-      repeat[order[k]] = generators_[order[k]] == generators_[order[k - 1]];
-    distinct.clear();
-    for (std::size_t i = 0; i < n; ++i) {
-      first[i] = repeat[i] ? -1 : static_cast<std::int64_t>(distinct.size());
-      if (!repeat[i]) distinct.push_back(generators_[i]);
-    }
-  }
-  const DelaunayNeighbors nb = delaunay_neighbors(distinct);
+  const Coincidence c = coincidence(generators_);
+  // Rejecting, the triangulation of all the generators names any coincident pair.
+  const DelaunayNeighbors nb =
+      delaunay_neighbors(coincident == Coincident::reject ? generators_ : c.distinct);
   start_.reserve(n + 1);
   start_.push_back(0);
   moments_.reserve(n);
@@ -45,20 +82,20 @@ VoronoiPartition::VoronoiPartition(const CellIntegrator& integrator, std::vector
   std::vector<Vec2> neighbors;
   ConvexPolygon cell;
   for (std::size_t i = 0; i < n; ++i) {
-    if (first[i] < 0) {
-      start_.push_back(vertices_.size());
-      moments_.push_back(Moments{});
-      continue;
-    }
-    const auto d = static_cast<std::size_t>(first[i]);
-    neighbors.clear();
-    for (std::uint32_t k = nb.start[d]; k < nb.start[d + 1]; ++k)
-      neighbors.push_back(distinct[nb.index[k]]);
-    integrator.cell(generators_[i], neighbors, cell);
+    cell_of(integrator, c, nb, i, neighbors, cell);
     vertices_.insert(vertices_.end(), cell.begin(), cell.end());
     start_.push_back(vertices_.size());
     moments_.push_back(integrator.integrate(cell, generators_[i]));
   }
+}
+
+void voronoi_cell(const CellIntegrator& integrator, std::span<const Vec2> generators,
+                  std::size_t self, ConvexPolygon& out) {
+  const Coincidence c = coincidence(generators);
+  const DelaunayNeighbors nb =
+      c.distinct.size() > 1 ? delaunay_neighbors(c.distinct) : DelaunayNeighbors{{0, 0}, {}};
+  std::vector<Vec2> neighbors;
+  cell_of(integrator, c, nb, self, neighbors, out);
 }
 
 double VoronoiPartition::cost(std::span<const Vec2> points) const {

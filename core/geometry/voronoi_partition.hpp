@@ -11,10 +11,10 @@ class VoronoiPartition {
  public:
   enum class Coincident {
     reject,  // throw GeometryError naming the pair
-    share,   // the first of equal generators gets the cell, the others an empty one
+    split,   // equal generators split their cell into wedges, in index order (clip_to_wedge)
   };
   // Cells from the generators' Delaunay neighbours. Throws GeometryError for non-finite
-  // generators, and for coincident ones unless told to share.
+  // generators, and for coincident ones unless told to split.
   VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
                    Coincident coincident = Coincident::reject);
 
@@ -38,5 +38,10 @@ class VoronoiPartition {
   std::vector<std::size_t> start_;
   std::vector<Moments> moments_;
 };
+
+// The cell of generators[self] alone, as VoronoiPartition(..., split) gives it: what a robot
+// computes from the generators it knows of.
+void voronoi_cell(const CellIntegrator& integrator, std::span<const Vec2> generators,
+                  std::size_t self, ConvexPolygon& out);
 
 }  // namespace covsim

@@ -48,6 +48,16 @@ TEST_CASE("a minimal scenario loads", "[scenario]") {
   CHECK(s.robot_positions.size() == 2);
   CHECK(s.seed == 7u);
   CHECK(s.density->is_uniform());
+  // The neighbour acquisition before the first loop 1: one broadcast period, then up to ten.
+  CHECK(s.coverage.network.acquire_time() == s.coverage.network.broadcast_period);
+  CHECK(s.coverage.network.acquire_deadline().ns() ==
+        10 * s.coverage.network.broadcast_period.ns());
+  const Scenario t = load_scenario(write(
+      "acquire.json",
+      "{" + kSquare +
+          R"(, "density": {"type": "uniform"}, "network": {"acquire": 0.5, "acquire_timeout": 3}})"));
+  CHECK(t.coverage.network.acquire_time() == SimTime::from_seconds(0.5));
+  CHECK(t.coverage.network.acquire_deadline() == SimTime::from_seconds(3.0));
 }
 
 TEST_CASE("scenario errors name the file, the JSON path and what was expected", "[scenario]") {
@@ -104,6 +114,10 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
                "$.network.delay.max: expected max >= min");
   expect_error("{" + kSquare + ", " + d + R"(, "network": {"delay": {"model": "gamma"}}})",
                "$.network.delay.model: expected one of");
+  expect_error("{" + kSquare + ", " + d + R"(, "network": {"acquire": -1}})",
+               "$.network.acquire: expected a non-negative number");
+  expect_error("{" + kSquare + ", " + d + R"(, "network": {"acquire_timeout": 1e9}})",
+               "$.network.acquire_timeout: expected at most 1e6 s");
   expect_error("{" + kSquare + ", " + d + R"(, "loops": {"loop1_period": 1}})",
                "$.loops.loop1_period: loop1_period applies to");
   expect_error("{" + kSquare + ", " + d + R"(, "loops": {"mode": "periodic", "loop2_period": 0}})",

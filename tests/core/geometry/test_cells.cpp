@@ -178,3 +178,37 @@ TEST_CASE("cells do not overlap: pieces of different cells share no area", "[cel
     CHECK(owners <= 1);
   }
 }
+
+TEST_CASE("coincident generators split their cell into wedges, in index order", "[cells]") {
+  World w(square(0, 0, 2, 2), {});
+  const Vec2 c{1, 1};
+  const auto split = VoronoiPartition::Coincident::split;
+  // Two at the centre: the first takes the upper half, the second the lower; cost ½∫|x - c|²
+  // over [0, 2] x [1, 2] = ½ (2/3 + 2/3).
+  const VoronoiPartition two(w.cells, {c, c}, split);
+  check_summary(two.summary(0), 2.0, {1, 1.5}, 2.0 / 3.0);
+  check_summary(two.summary(1), 2.0, {1, 0.5}, 2.0 / 3.0);
+  // Four at the centre: the quadrants, counter-clockwise from the x axis.
+  const VoronoiPartition four(w.cells, {c, c, c, c}, split);
+  const Vec2 quadrant[] = {{1.5, 1.5}, {0.5, 1.5}, {0.5, 0.5}, {1.5, 0.5}};
+  for (std::size_t i = 0; i < 4; ++i)
+    check_summary(four.summary(i), 1.0, quadrant[i], 1.0 / 3.0);
+  // Three, beside a distinct fourth: the wedges tile the shared cell and have distinct
+  // centroids; the masses add up to Ω's.
+  const std::vector<Vec2> g{{0.7, 0.8}, {1.6, 1.2}, {0.7, 0.8}, {0.7, 0.8}};
+  const VoronoiPartition three(w.cells, g, split);
+  double mass = 0.0;
+  for (std::size_t i = 0; i < g.size(); ++i)
+    mass += three.summary(i).mass;
+  CHECK(mass == Approx(4.0).epsilon(1e-12));
+  CHECK(three.summary(0).centroid != three.summary(2).centroid);
+  CHECK(three.summary(2).centroid != three.summary(3).centroid);
+  CHECK(three.summary(0).centroid != three.summary(3).centroid);
+  // One robot's own cell, from the generators it knows, is the partition's cell.
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    ConvexPolygon own;
+    voronoi_cell(w.cells, g, i, own);
+    const auto cell = three.cell(i);
+    CHECK(std::vector<Vec2>(cell.begin(), cell.end()) == own);
+  }
+}

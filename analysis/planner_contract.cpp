@@ -1,0 +1,315 @@
+#include "analysis/planner_contract.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "core/geometry/environment.hpp"
+#include "core/geometry/visibility_graph.hpp"
+#include "core/random_stream.hpp"
+#include "planners/grid_astar.hpp"
+#include "planners/planner_factory.hpp"
+#include "planners/tangent_bug.hpp"
+#include "scenarios/obstacle_course.hpp"
+
+namespace covsim {
+
+namespace {
+
+constexpr std::uint64_t kCasesPerMap = 10;
+
+std::string number(double v) {
+  return std::isinf(v) ? "inf" : fmt::format("{}", v);
+}
+
+double perimeter(const std::vector<Vec2>& ring) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    sum += distance(ring[i], ring[(i + 1) % ring.size()]);
+  return sum;
+}
+
+// One map of the suite, shared by kCasesPerMap consecutive cases.
+struct ContractMap {
+  ObstacleCourseSpec spec;
+  std::unique_ptr<Environment> env;
+  std::unique_ptr<VisibilityGraph> graph;
+  double boundary_length = 0.0;
+};
+
+ContractMap make_map(std::uint64_t seed, std::uint64_t group) {
+  RandomStream rng(seed, group, "contract-map");
+  ContractMap m;
+  m.spec.width = rng.uniform(6.0, 12.0);
+  m.spec.height = rng.uniform(6.0, 12.0);
+  m.spec.obstacles = static_cast<std::uint32_t>(3 + rng.below(7));
+  m.spec.clearance = rng.uniform(0.1, 0.3);
+  const ObstacleCourse c = obstacle_course(rng.next_u64(), m.spec);
+  m.env = std::make_unique<Environment>(c.outer, c.holes);
+  m.graph = std::make_unique<VisibilityGraph>(*m.env);
+  for (const BoundaryEdge& e : m.env->boundary())
+    m.boundary_length += distance(e.a, e.b);
+  return m;
+}
+
+Vec2 point_on_boundary(const Environment& env, double length, RandomStream& rng) {
+  double at = rng.uniform(0.0, length);
+  for (const BoundaryEdge& e : env.boundary()) {
+    const double l = distance(e.a, e.b);
+    if (at <= l) return e.a + (at / l) * (e.b - e.a);
+    at -= l;
+  }
+  return env.boundary().back().b;
+}
+
+// A point of the bounding box outside Ω (in an obstacle or a notch), if one is found.
+std::optional<Vec2> point_outside(const Environment& env, RandomStream& rng) {
+  const Box& b = env.bounds();
+  for (int k = 0; k < 10000; ++k) {
+    std::optional<Vec2> p;
+    if (env.hole_count() > 0 && rng.bernoulli(0.8)) {
+      // Thin obstacles are hard to hit from the whole box: aim at one.
+      Box hb;
+      for (Vec2 v : env.hole(rng.below(env.hole_count())))
+        hb.add(v);
+      p = Vec2{rng.uniform(hb.lo.x, hb.hi.x), rng.uniform(hb.lo.y, hb.hi.y)};
+    } else {
+      p = Vec2{rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
+    }
+    if (!env.contains(*p)) return p;
+  }
+  return std::nullopt;
+}
+
+Vec2 point_inside(const Environment& env, RandomStream& rng) {
+  const Box& b = env.bounds();
+  for (;;) {
+    const Vec2 p{rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
+    if (env.contains(p)) return p;
+  }
+}
+
+std::string_view mode_name(TangentBug::Mode m) {
+  switch (m) {
+    case TangentBug::Mode::motion_to_goal:
+      return "motion_to_goal";
+    case TangentBug::Mode::approach:
+      return "approach";
+    case TangentBug::Mode::follow:
+      return "follow";
+    case TangentBug::Mode::leave:
+      return "leave";
+    case TangentBug::Mode::to_projection:
+      return "to_projection";
+    case TangentBug::Mode::to_closest:
+      return "to_closest";
+    case TangentBug::Mode::done:
+      return "done";
+  }
+  return "unknown";
+}
+
+ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std::uint64_t seed,
+                        std::uint64_t index, bool record = false) {
+  const Environment& env = *map.env;
+  ContractResult res;
+  res.seed = seed;
+  res.index = index;
+  res.reproducer = fmt::format(
+      "covsim planner-contract --planner {} --range {} --noise {} --step {} --seed {} --case {}",
+      setup.planner, number(setup.range), setup.noise_sigma, setup.step, seed, index);
+  RandomStream rng(seed, index, "contract-case");
+  res.start = rng.bernoulli(0.15) ? point_on_boundary(env, map.boundary_length, rng)
+                                  : point_inside(env, rng);
+  const double kind = rng.uniform01();
+  if (kind < 0.55) {
+    res.goal = point_inside(env, rng);
+  } else if (kind < 0.8) {
+    res.goal = point_outside(env, rng).value_or(point_inside(env, rng));
+  } else if (kind < 0.9) {
+    res.goal = point_on_boundary(env, map.boundary_length, rng);
+  } else {
+    const Box& b = env.bounds();
+    res.goal = {rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
+  }
+  res.reachable = env.contains(res.goal);
+  const Vec2 projection = res.reachable ? res.goal : env.closest_point(res.goal);
+  const double tol = 1e-5 * env.diameter();
+
+  PlannerConfig config;
+  config.type = setup.planner;
+  config.resolution = setup.resolution.value_or(map.spec.clearance / 4.0);
+  const SensorSpec sensor{setup.noise_sigma};
+  std::unique_ptr<Planner> planner =
+      setup.make ? setup.make(env, sensor) : PlannerFactory(env, config, sensor).make();
+  RandomStream noise(seed, index, "contract-noise");
+  const auto max_steps =
+      static_cast<std::size_t>(12.0 * (map.boundary_length + env.diameter()) / setup.step + 1000.0);
+
+  const auto fail = [&](std::string what) {
+    if (res.failure.empty()) res.failure = std::move(what);
+  };
+  planner->set_goal(res.goal);
+  Vec2 x = res.start;
+  res.status = PlanStatus::moving;
+  for (; res.steps < max_steps && res.status == PlanStatus::moving; ++res.steps) {
+    SensorReading reading = sense(env, x, setup.range);
+    if (setup.noise_sigma > 0.0)
+      add_range_noise(reading, noise, setup.noise_sigma, env.tolerance());
+    const PlanStep s = planner->step(reading, setup.step);
+    if (distance(x, s.next) > setup.step * (1.0 + 1e-12) + 1e-12)
+      fail(fmt::format("step {}: proposed a step of {} m", res.steps, distance(x, s.next)));
+    const Vec2 next = env.advance(x, s.next);
+    // Into a wall the sensor showed (within range, or touching): the planner's own fault. A
+    // wall beyond the range stops the motion as a real robot is stopped, on contact. (A
+    // proposal that grazes a corner by a rounding error is not counted.)
+    if (setup.noise_sigma == 0.0 && !env.segment_inside(x, s.next) &&
+        distance(x, next) < std::max(setup.range, env.tolerance()) &&
+        distance(s.next, env.closest_point(s.next)) > 1e-6 * env.diameter()) {
+      fail(fmt::format("step {}: proposed a step into a sensed wall, ({}, {}) -> ({}, {})",
+                       res.steps, x.x, x.y, s.next.x, s.next.y));
+    }
+    if (record) {
+      res.path.push_back(x);
+      const auto* bug = dynamic_cast<const TangentBug*>(planner.get());
+      res.modes.emplace_back(bug != nullptr ? mode_name(bug->mode()) : "");
+    }
+    res.length += distance(x, next);
+    x = next;
+    res.status = s.status;
+  }
+  res.end = x;
+  if (record) {
+    res.path.push_back(x);
+    res.rings = env.rings();
+  }
+  if (const auto* bug = dynamic_cast<const TangentBug*>(planner.get())) {
+    res.episodes = bug->episodes().size();
+    res.recoveries = bug->recoveries();
+  }
+
+  if (res.status == PlanStatus::moving) fail(fmt::format("no end within {} steps", max_steps));
+  if (res.status == PlanStatus::reached && distance(x, res.goal) > tol)
+    fail(fmt::format("reported reached {} m from the goal", distance(x, res.goal)));
+  if (res.status == PlanStatus::projected) {
+    if (res.reachable) fail("declared a goal in Ω unreachable (projected)");
+    const double want = distance(projection, res.goal), got = distance(x, res.goal);
+    if (std::fabs(got - want) > tol || env.edges_at(x).empty())
+      fail(fmt::format("projected to a point {} m from the goal; the projection is {} m away", got,
+                       want));
+  }
+  const GeodesicPath path = map.graph->shortest_path(res.start, res.reachable ? res.goal : x);
+  res.shortest = path.length;
+  res.bound = INFINITY;
+  if (setup.planner == "visibility_graph") {
+    res.bound = res.shortest * (1.0 + 1e-9) + tol;
+  } else if (setup.planner == "grid_astar") {
+    const std::size_t turns = path.points.size() >= 2 ? path.points.size() - 2 : 0;
+    res.bound = grid_path_bound(res.shortest, turns, *config.resolution) + tol;
+  } else if (const auto* bug = dynamic_cast<const TangentBug*>(planner.get())) {
+    res.bound = res.shortest + tol;
+    // Each boundary-following episode, and each obstacle only steered round, once.
+    for (std::uint32_t ring : bug->episodes())
+      res.bound += perimeter(env.rings()[ring]);
+    for (std::uint32_t ring : bug->engaged()) {
+      const auto& e = bug->episodes();
+      if (std::find(e.begin(), e.end(), ring) == e.end()) res.bound += perimeter(env.rings()[ring]);
+    }
+    if (!res.reachable && !bug->episodes().empty())
+      res.bound += 0.5 * perimeter(env.rings()[bug->episodes().back()]);
+    // Range noise makes local minima and leave points where there are none.
+    if (setup.noise_sigma > 0.0) res.bound *= 1.5;
+  }
+  if (setup.complete) {
+    if (res.reachable && res.status != PlanStatus::reached)
+      fail(fmt::format("did not reach a reachable goal ({})", to_string(res.status)));
+    if (!res.reachable && res.status != PlanStatus::projected)
+      fail(fmt::format("did not settle at the projection of an unreachable goal ({})",
+                       to_string(res.status)));
+    if (res.length > res.bound)
+      fail(fmt::format("path {} m exceeds its bound {} m (L* = {} m)", res.length, res.bound,
+                       res.shortest));
+    if (setup.noise_sigma == 0.0 && res.recoveries > 0)
+      fail("a loop closed round an obstacle that does not enclose the goal");
+  }
+  if (!res.failure.empty()) {
+    res.failure = fmt::format("{}: start ({}, {}), goal ({}, {}): {}", setup.label(), res.start.x,
+                              res.start.y, res.goal.x, res.goal.y, res.failure);
+  }
+  return res;
+}
+
+void add(ContractSummary& s, const ContractResult& r) {
+  ++s.cases;
+  if (r.reachable) ++s.reachable;
+  if (r.status == PlanStatus::reached) ++s.reached;
+  if (r.status == PlanStatus::projected) ++s.projected;
+  if (r.status == PlanStatus::stalled) ++s.stalled;
+  s.recoveries += r.recoveries;
+  if (r.status == PlanStatus::reached && r.shortest > 1e-9) {
+    const double ratio = r.length / r.shortest;
+    s.worst_ratio = std::max(s.worst_ratio, ratio);
+    s.mean_ratio += ratio;
+    ++s.ratio_cases;
+  }
+  if (std::isfinite(r.bound) && r.bound > 0.0)
+    s.worst_bound_use = std::max(s.worst_bound_use, r.length / r.bound);
+  if (!r.failure.empty()) {
+    ++s.failures;
+    if (s.failed.size() < 20) s.failed.push_back(r);
+  }
+}
+
+}  // namespace
+
+std::string ContractSetup::label() const {
+  return fmt::format("{} range={} noise={}", planner, number(range), noise_sigma);
+}
+
+ContractResult run_contract_case(const ContractSetup& setup, std::uint64_t seed,
+                                 std::uint64_t index) {
+  const ContractMap map = make_map(seed, index / kCasesPerMap);
+  return run_case(setup, map, seed, index, true);
+}
+
+ContractSummary run_contract(const ContractSetup& setup, std::uint64_t seed, std::uint64_t first,
+                             std::uint64_t count, unsigned jobs,
+                             const std::function<void(const ContractResult&)>& progress) {
+  std::vector<ContractResult> results(count);
+  // Workers take whole maps, so that each map is built once.
+  const std::uint64_t first_group = first / kCasesPerMap;
+  const std::uint64_t last_group = count == 0 ? first_group : (first + count - 1) / kCasesPerMap;
+  std::atomic<std::uint64_t> next{first_group};
+  std::mutex mutex;
+  const auto work = [&] {
+    for (std::uint64_t g = next++; g <= last_group && count > 0; g = next++) {
+      const ContractMap map = make_map(seed, g);
+      for (std::uint64_t i = std::max(first, g * kCasesPerMap);
+           i < std::min(first + count, (g + 1) * kCasesPerMap); ++i) {
+        results[i - first] = run_case(setup, map, seed, i);
+        if (progress) {
+          const std::lock_guard<std::mutex> lock(mutex);
+          progress(results[i - first]);
+        }
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (unsigned t = 1; t < std::max(1u, jobs); ++t)
+    threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads)
+    t.join();
+  ContractSummary s;
+  for (const ContractResult& r : results)
+    add(s, r);
+  if (s.ratio_cases > 0) s.mean_ratio /= static_cast<double>(s.ratio_cases);
+  return s;
+}
+
+}  // namespace covsim

@@ -1,0 +1,131 @@
+// `covsim planner-contract --planner NAME [--range R] [--noise S] [--cases N] [--seed N]
+// [--jobs J]`: runs the planner contract suite (analysis/planner_contract) for a soak, or
+// `--case I` for one case in detail. Prints a summary and one reproducer line per failing
+// case; exit 1 if any case failed.
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "analysis/planner_contract.hpp"
+#include "apps/commands.hpp"
+#include "apps/input_error.hpp"
+#include "core/atomic_file.hpp"
+#include "planners/planner_factory.hpp"
+
+namespace covsim::app {
+
+namespace {
+struct Options {
+  ContractSetup setup;
+  std::string range = "inf";
+  bool incomplete = false;
+  std::uint64_t seed = 1, first = 0, cases = 1000;
+  std::optional<std::uint64_t> one;
+  std::string out;
+  unsigned jobs = 1;
+};
+
+double parse_range(const std::string& s) {
+  if (s == "inf" || s == "infinite") return INFINITY;
+  std::size_t used = 0;
+  double v = -1.0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size() || !(v >= 0.0) || !std::isfinite(v))
+    throw InputError("planner-contract: --range: expected a number >= 0 or \"inf\", got \"" + s +
+                     "\"");
+  return v;
+}
+
+nlohmann::ordered_json points(const std::vector<Vec2>& ps) {
+  nlohmann::ordered_json a = nlohmann::ordered_json::array();
+  for (Vec2 p : ps)
+    a.push_back({p.x, p.y});
+  return a;
+}
+
+void write_case(const ContractResult& r, const std::string& path) {
+  nlohmann::ordered_json j;
+  j["rings"] = nlohmann::ordered_json::array();
+  for (const auto& ring : r.rings)
+    j["rings"].push_back(points(ring));
+  j["start"] = {r.start.x, r.start.y};
+  j["goal"] = {r.goal.x, r.goal.y};
+  j["status"] = std::string(to_string(r.status));
+  j["path"] = points(r.path);
+  j["modes"] = r.modes;
+  AtomicFile f(path);
+  f.stream() << j.dump(1) << '\n';
+  f.commit();
+}
+
+void print_case(const ContractResult& r) {
+  std::cout << fmt::format(
+      "case {}: start ({}, {}) goal ({}, {}) {}: {} at ({}, {}) after {} steps, path {:.6g} m, "
+      "L* {:.6g} m, bound {:.6g} m, {} boundary-following episodes\n",
+      r.index, r.start.x, r.start.y, r.goal.x, r.goal.y, r.reachable ? "reachable" : "outside Ω",
+      to_string(r.status), r.end.x, r.end.y, r.steps, r.length, r.shortest, r.bound, r.episodes);
+  if (!r.failure.empty()) std::cout << "FAILED: " << r.failure << '\n';
+}
+}  // namespace
+
+void add_planner_contract_command(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("planner-contract",
+                                     "Run the planner contract suite on random obstacle courses");
+  cmd->add_option("--planner", o->setup.planner, "Planner name")->capture_default_str();
+  cmd->add_option("--range", o->range, "Sensor range [m], or inf")->capture_default_str();
+  cmd->add_option("--noise", o->setup.noise_sigma, "Range noise sigma [m]")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--step", o->setup.step, "Step length [m]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--resolution", o->setup.resolution, "grid_astar cell side [m]")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--incomplete", o->incomplete,
+                "The planner does not promise to reach reachable goals: check only that it "
+                "stays in Ω, ends, and reports stalls honestly");
+  cmd->add_option("--seed", o->seed, "Seed of the suite")->capture_default_str();
+  cmd->add_option("--first", o->first, "First case index")->capture_default_str();
+  cmd->add_option("--cases", o->cases, "Number of cases")->capture_default_str();
+  cmd->add_option("--case", o->one, "Run this one case and describe it");
+  cmd->add_option("--out", o->out,
+                  "With --case: write the map, the path and the planner's modes as JSON");
+  cmd->add_option("--jobs", o->jobs, "Worker threads")
+      ->check(CLI::Range(1u, 256u))
+      ->capture_default_str();
+  cmd->callback([o] {
+    const auto& names = planner_names();
+    if (std::find(names.begin(), names.end(), o->setup.planner) == names.end())
+      throw InputError("planner-contract: --planner: unknown planner \"" + o->setup.planner + "\"");
+    o->setup.range = parse_range(o->range);
+    o->setup.complete = !o->incomplete;
+    if (o->one) {
+      const ContractResult r = run_contract_case(o->setup, o->seed, *o->one);
+      print_case(r);
+      if (!o->out.empty()) write_case(r, o->out);
+      if (!r.failure.empty()) throw std::runtime_error("the case failed its contract");
+      return;
+    }
+    const ContractSummary s = run_contract(o->setup, o->seed, o->first, o->cases, o->jobs);
+    std::cout << fmt::format(
+        "{}: {} cases ({} reachable): {} reached, {} projected, {} stalled; {} failed; "
+        "path/L* mean {:.4f}, worst {:.4f}; worst path/bound {:.4f}; {} recoveries\n",
+        o->setup.label(), s.cases, s.reachable, s.reached, s.projected, s.stalled, s.failures,
+        s.mean_ratio, s.worst_ratio, s.worst_bound_use, s.recoveries);
+    for (const ContractResult& r : s.failed)
+      std::cout << "FAILED: " << r.failure << "\n  rerun: " << r.reproducer << '\n';
+    if (s.failures > 0) throw std::runtime_error(fmt::format("{} cases failed", s.failures));
+  });
+}
+
+}  // namespace covsim::app

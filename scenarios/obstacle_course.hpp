@@ -1,0 +1,35 @@
+#pragma once
+// Random maps that make local planners work, for the planner contract suite: a rectangular
+// room (sometimes with rectangular notches cut into its walls, so that points in a notch lie
+// outside the outer boundary) holding obstacles of the shapes that trap Bug algorithms:
+// thin walls, T-walls, L-, E-, comb-shaped walls, cups (U-shapes) and boxes, each at an
+// arbitrary angle and size, kept `clearance` apart from each other and from the walls. The
+// same seed gives the same map on any machine.
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "core/geometry/environment.hpp"
+
+namespace covsim {
+
+enum class ObstacleShape { box, thin_wall, t_wall, l_wall, e_wall, comb, cup };
+std::string_view to_string(ObstacleShape s);
+
+struct ObstacleCourseSpec {
+  double width = 10.0, height = 8.0;  // metres
+  std::uint32_t obstacles = 7;        // at most; fewer when they do not fit
+  double clearance = 0.15;            // the narrowest passage, metres
+  std::uint32_t notches = 2;          // at most, cut into the bottom and top walls
+};
+
+struct ObstacleCourse {
+  std::vector<Vec2> outer;
+  std::vector<std::vector<Vec2>> holes;
+  std::vector<ObstacleShape> shapes;  // of each hole
+};
+
+// Throws std::invalid_argument for a spec out of range.
+ObstacleCourse obstacle_course(std::uint64_t seed, const ObstacleCourseSpec& spec = {});
+
+}  // namespace covsim

@@ -1,0 +1,165 @@
+// The planner contract suite (analysis/planner_contract) in the normal test run: every
+// planner that claims to reach reachable goals, at several sensor ranges and with range
+// noise, on random obstacle courses; the others for honest stalls. Each TEST_CASE is its own
+// ctest entry, so the suite spreads over the cores. More cases: `covsim planner-contract`.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "analysis/planner_contract.hpp"
+#include "core/geometry/environment.hpp"
+#include "scenarios/obstacle_course.hpp"
+
+using namespace covsim;
+
+namespace {
+constexpr std::uint64_t kSeed = 20261121;
+
+ContractSummary check(const ContractSetup& setup, std::uint64_t cases) {
+  const ContractSummary s = run_contract(setup, kSeed, 0, cases, 1);
+  std::ostringstream report;
+  report << setup.label() << ": " << s.cases << " cases, " << s.reached << " reached, "
+         << s.projected << " projected, " << s.stalled << " stalled, worst path/L* "
+         << s.worst_ratio << ", worst path/bound " << s.worst_bound_use;
+  for (const ContractResult& r : s.failed)
+    report << "\n" << r.failure << "\n  rerun: " << r.reproducer;
+  INFO(report.str());
+  CHECK(s.cases == cases);
+  CHECK(s.failures == 0);
+  return s;
+}
+
+ContractSetup bug(double range, double noise = 0.0) {
+  ContractSetup s;
+  s.planner = "tangent_bug";
+  s.range = range;
+  s.noise_sigma = noise;
+  return s;
+}
+}  // namespace
+
+TEST_CASE("contract: TangentBug with a contact sensor (R = 0)", "[contract]") {
+  const ContractSummary s = check(bug(0.0), 1000);
+  CHECK(s.reached == s.reachable);
+  CHECK(s.reached + s.projected == s.cases);
+  CHECK(s.recoveries == 0);
+}
+
+TEST_CASE("contract: TangentBug with a short range (R = 0.5 m)", "[contract]") {
+  const ContractSummary s = check(bug(0.5), 1000);
+  CHECK(s.reached + s.projected == s.cases);
+}
+
+TEST_CASE("contract: TangentBug with a long range (R = 2 m)", "[contract]") {
+  check(bug(2.0), 500);
+}
+
+TEST_CASE("contract: TangentBug with an infinite range", "[contract]") {
+  const ContractSummary s = check(bug(INFINITY), 1000);
+  CHECK(s.reached + s.projected == s.cases);
+}
+
+TEST_CASE("contract: TangentBug with range noise", "[contract]") {
+  check(bug(0.5, 0.01), 400);
+  check(bug(INFINITY, 0.01), 400);
+}
+
+TEST_CASE("contract: the map-based planners", "[contract]") {
+  ContractSetup s;
+  s.planner = "visibility_graph";
+  const ContractSummary v = check(s, 500);
+  CHECK(v.worst_ratio <= 1.0 + 1e-6);  // shortest paths
+  s.planner = "grid_astar";
+  check(s, 200);
+}
+
+TEST_CASE("contract: potential field and straight line stay in Ω and report stalls honestly",
+          "[contract]") {
+  for (const char* name : {"potential_field", "straight_line"}) {
+    for (double range : {0.0, 0.5, double(INFINITY)}) {
+      ContractSetup s;
+      s.planner = name;
+      s.range = range;
+      s.complete = false;
+      const ContractSummary r = check(s, 150);
+      CHECK(r.projected == 0);  // neither ever claims a goal is unreachable
+    }
+  }
+}
+
+TEST_CASE("contract: a case is the same on every run, and reruns alone", "[contract]") {
+  const ContractSetup s = bug(0.5);
+  const ContractSummary all = run_contract(s, kSeed, 0, 30, 2);
+  const ContractResult one = run_contract_case(s, kSeed, 17);
+  const ContractResult again = run_contract_case(s, kSeed, 17);
+  CHECK(one.length == again.length);
+  CHECK(one.end == again.end);
+  CHECK(all.cases == 30);
+  CHECK(one.reproducer.find("--seed 20261121 --case 17") != std::string::npos);
+  CHECK(one.path.size() == one.steps + 1);
+  CHECK(one.rings.size() >= 2);
+}
+
+namespace {
+// Planners that break the contract in one way each: the harness must say so.
+class Liar final : public Planner {
+ public:
+  enum Lie { reached_at_start, projects_everything, long_steps };
+  explicit Liar(Lie lie) : lie_(lie) {}
+  std::string_view name() const override { return "liar"; }
+  void set_goal(Vec2 goal) override { goal_ = goal; }
+  PlanStep step(const SensorReading& r, double max_step) override {
+    switch (lie_) {
+      case reached_at_start:
+        return {r.position, PlanStatus::reached};
+      case projects_everything:
+        return {r.position, PlanStatus::projected};
+      case long_steps:
+        break;
+    }
+    const double d = distance(goal_, r.position);
+    if (d <= 2.0 * max_step) return {goal_, PlanStatus::reached};
+    return {r.position + (2.0 * max_step / d) * (goal_ - r.position), PlanStatus::moving};
+  }
+
+ private:
+  Lie lie_;
+  Vec2 goal_;
+};
+
+ContractSummary run_liar(Liar::Lie lie, bool complete) {
+  ContractSetup s;
+  s.planner = "liar";
+  s.complete = complete;
+  s.make = [lie](const Environment&, const SensorSpec&) { return std::make_unique<Liar>(lie); };
+  return run_contract(s, kSeed, 0, 20, 1);
+}
+}  // namespace
+
+TEST_CASE("contract: the harness catches planners that break the contract", "[contract]") {
+  // Claiming arrival away from the goal is caught even for an incomplete planner.
+  CHECK(run_liar(Liar::reached_at_start, false).failures == 20);
+  const ContractSummary projects = run_liar(Liar::projects_everything, false);
+  CHECK(projects.failures == 20);
+  REQUIRE_FALSE(projects.failed.empty());
+  CHECK(projects.failed.front().reproducer.find("--case") != std::string::npos);
+  CHECK(run_liar(Liar::long_steps, false).failures == 20);
+  // An incomplete planner may stall; one that claims completeness may not.
+  ContractSetup line;
+  line.planner = "straight_line";
+  line.complete = true;
+  CHECK(run_contract(line, kSeed, 0, 20, 1).failures > 0);
+}
+
+TEST_CASE("obstacle courses are valid environments, the same for the same seed", "[contract]") {
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const ObstacleCourse a = obstacle_course(seed), b = obstacle_course(seed);
+    CHECK(a.holes == b.holes);
+    CHECK(a.outer == b.outer);
+    CHECK(a.holes.size() == a.shapes.size());
+    CHECK_NOTHROW(Environment(a.outer, a.holes));
+  }
+  CHECK_THROWS_AS(obstacle_course(1, ObstacleCourseSpec{1.0, 8.0, 3, 0.1, 0}),
+                  std::invalid_argument);
+}
