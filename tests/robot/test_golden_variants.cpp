@@ -1,0 +1,103 @@
+// Golden fingerprints of variants beyond the paper's ideal-network scenarios: lossy and
+// delayed networks of every model, range and line-of-sight limits, noisy and sampled
+// sensors, every planner and controller, and non-uniform densities. A change that alters
+// any of these runs changes its fingerprint: update them deliberately and say why in the
+// commit message. A refactor must leave every one unchanged.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+#include "analysis/coverage_run.hpp"
+#include "core/fingerprint.hpp"
+#include "scenarios/scenario.hpp"
+
+using namespace covsim;
+
+namespace {
+struct Variant {
+  const char* name;
+  const char* scenario;  // in scenarios/
+  const char* patch;     // JSON merge patch applied to it
+  const char* fingerprint;
+};
+
+// Short runs: every variant stops by max_time 40 s at the latest.
+const Variant kVariants[] = {
+    {"bernoulli loss, decentralized", "u_shape.json",
+     R"({"network": {"loss": {"model": "bernoulli", "p": 0.2}}})", "18bc81d268f60b9b"},
+    {"gilbert-elliott loss, uniform delay, random phase, staleness", "two_obstacles.json",
+     R"({"network": {"loss": {"model": "gilbert_elliott", "p_good_to_bad": 0.1,
+         "p_bad_to_good": 0.4, "loss_good": 0.05, "loss_bad": 0.7},
+         "delay": {"model": "uniform", "min": 0.01, "max": 0.2}, "random_phase": true,
+         "staleness": 1.0, "broadcast_period": 0.2}})",
+     "f600812841339de3"},
+    {"distance loss, exponential delay, range, line of sight", "two_obstacles.json",
+     R"({"network": {"range": 0.6, "line_of_sight": true,
+         "loss": {"model": "distance", "p_min": 0.05, "d_max": 0.8, "exponent": 2},
+         "delay": {"model": "exponential", "base": 0.02, "mean": 0.05}}})",
+     "679be0e3e3b92418"},
+    {"lognormal delay, periodic loop 1", "u_shape.json",
+     R"({"network": {"delay": {"model": "lognormal", "base": 0.01, "mu": -3, "sigma": 0.5}},
+         "loops": {"mode": "periodic", "loop1_period": 0.5}})",
+     "bccc048aa5c51c92"},
+    {"sampled, noisy sensor with dropout, short range", "two_obstacles.json",
+     R"({"sensor": {"range": 0.2, "period": 0.3, "noise": {"sigma": 0.005}, "dropout": 0.2}})",
+     "418a6090aac70ade"},
+    {"contact sensor", "fig2c.json", R"({"sensor": {"range": 0}})", "6214c5431dda41d9"},
+    {"potential field", "u_shape.json",
+     R"({"planner": {"type": "potential_field", "influence": 0.2, "stall_window": 30}})",
+     "e945dd99bdb374f0"},
+    {"grid A*", "two_obstacles.json", R"({"planner": {"type": "grid_astar", "resolution": 0.02}})",
+     "c6e7b4d2718513c4"},
+    {"visibility graph", "office.json",
+     R"({"planner": {"type": "visibility_graph"}, "convergence": {"max_time": 40}})",
+     "c5c2ac12e07c373d"},
+    {"straight line", "fig2d.json", R"({"planner": {"type": "straight_line"}})",
+     "448ee9ab3fc7b731"},
+    {"euclidean Lloyd", "fig2b.json", R"({"controller": {"type": "euclidean_lloyd"}})",
+     "dc0c9c12518ec1b3"},
+    {"geodesic Lloyd", "fig2b.json",
+     R"({"controller": {"type": "geodesic_lloyd", "resolution": 0.05, "gain": 0.5}})",
+     "244568c968cff543"},
+    {"geodesic Lloyd, decentralized", "u_shape.json",
+     R"({"controller": {"type": "geodesic_lloyd", "resolution": 0.05},
+         "network": {"loss": {"model": "bernoulli", "p": 0.1}}})",
+     "f702b4dfb127bad6"},
+    {"gaussian mixture density", "l_shape.json",
+     R"({"density": {"type": "gaussian_mixture", "floor": 0.1,
+         "components": [{"mean": [0.3, 0.7], "sigma": 0.2, "weight": 2},
+                        {"mean": [0.8, 0.2], "sigma": 0.3, "weight": 1}]}})",
+     "83f761d29ddbf4b6"},
+    {"bilinear raster density", "u_shape.json",
+     R"({"density": {"type": "raster", "file": "RASTER", "extent": [[0, 0], [1, 1]],
+         "interpolation": "bilinear"}})",
+     "765107a89ffc2ba6"},
+    {"office, decentralized under loss, periodic", "office.json",
+     R"({"network": {"loss": {"model": "bernoulli", "p": 0.1}},
+         "loops": {"mode": "periodic", "loop1_period": 1.0}, "convergence": {"max_time": 40}})",
+     "668317f2673408b4"},
+};
+
+Scenario variant(const Variant& v) {
+  const std::string dir = std::string(COVSIM_SOURCE_DIR) + "/scenarios/";
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(dir + v.scenario));
+  std::string patch = v.patch;
+  const std::string raster = std::string(COVSIM_SOURCE_DIR) + "/tests/data/ramp10.csv";
+  if (const auto at = patch.find("RASTER"); at != std::string::npos) patch.replace(at, 6, raster);
+  j.merge_patch(nlohmann::json::parse(patch));
+  if (!j.contains("convergence") || !j["convergence"].contains("max_time"))
+    j["convergence"]["max_time"] = 40;
+  return parse_scenario(j, v.name, dir);
+}
+}  // namespace
+
+TEST_CASE("network, sensor, planner, controller and density variants keep their fingerprints",
+          "[golden]") {
+  for (const Variant& v : kVariants) {
+    INFO(v.name);
+    const CoverageOutcome out = run_coverage(variant(v));
+    CHECK(Fingerprint::to_hex(out.fingerprint) == v.fingerprint);
+  }
+}
