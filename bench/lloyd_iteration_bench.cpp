@@ -2,6 +2,7 @@
 // environment, with mass, centroid and cost of every cell ∩ Ω.
 #include <benchmark/benchmark.h>
 
+#include "core/geometry/uniform_density.hpp"
 #include "bench/bench_world.hpp"
 #include "core/geometry/voronoi_partition.hpp"
 
@@ -10,7 +11,7 @@ namespace {
 void BM_LloydIteration(benchmark::State& state) {
   using namespace covsim;
   const Environment& env = bench::cluttered_environment();
-  const Density density = Density::uniform();
+  const UniformDensity density;
   const CellIntegrator integrator(env, density);
   const auto points = bench::random_points_in(env, static_cast<std::size_t>(state.range(0)), 1);
   double total = 0;

@@ -71,15 +71,19 @@ std::optional<JsonValue> JsonValue::find(std::string_view key) const {
 }
 
 void JsonValue::only_keys(std::initializer_list<std::string_view> allowed) const {
+  only_keys(std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+void JsonValue::only_keys(const std::vector<std::string>& allowed) const {
   if (!value_->is_object()) fail("expected an object, found " + kind(*value_));
   for (const auto& [key, v] : value_->items()) {
     bool known = false;
-    for (std::string_view a : allowed)
+    for (const std::string& a : allowed)
       known = known || a == key;
     if (!known) {
       std::string list;
-      for (std::string_view a : allowed)
-        list += (list.empty() ? "" : ", ") + std::string(a);
+      for (const std::string& a : allowed)
+        list += (list.empty() ? "" : ", ") + a;
       throw ScenarioError(fmt::format("{}: {}.{}: unknown key \"{}\" (expected one of: {})", file_,
                                       path_, key, key, list));
     }
@@ -140,11 +144,15 @@ std::string JsonValue::string() const {
 }
 
 std::string JsonValue::one_of(std::initializer_list<std::string_view> choices) const {
+  return one_of(std::vector<std::string>(choices.begin(), choices.end()));
+}
+
+std::string JsonValue::one_of(const std::vector<std::string>& choices) const {
   const std::string s = string();
   std::string list;
-  for (std::string_view c : choices) {
+  for (const std::string& c : choices) {
     if (c == s) return s;
-    list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";
+    list += (list.empty() ? "\"" : ", \"") + c + "\"";
   }
   fail(fmt::format("expected one of {}, found \"{}\"", list, s));
 }

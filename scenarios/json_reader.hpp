@@ -35,6 +35,7 @@ class JsonValue {
   JsonValue at(std::string_view key) const;
   std::optional<JsonValue> find(std::string_view key) const;
   void only_keys(std::initializer_list<std::string_view> allowed) const;
+  void only_keys(const std::vector<std::string>& allowed) const;
   // Arrays.
   std::size_t size() const;  // fails unless an array
   JsonValue operator[](std::size_t i) const;
@@ -47,6 +48,7 @@ class JsonValue {
   bool boolean() const;
   std::string string() const;
   std::string one_of(std::initializer_list<std::string_view> choices) const;
+  std::string one_of(const std::vector<std::string>& choices) const;
   Vec2 point() const;                // [x, y], finite
   std::vector<Vec2> points() const;  // [[x, y], ...]
 

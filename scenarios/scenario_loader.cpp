@@ -2,8 +2,10 @@
 #include <cmath>
 
 #include "core/geometry/cell_integrator.hpp"
+#include "core/geometry/density_registry.hpp"
 #include "core/geometry/geometry_error.hpp"
 #include "core/geometry/ring_validation.hpp"
+#include "scenarios/component_reader.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
 
@@ -29,69 +31,17 @@ std::shared_ptr<const Environment> read_environment(const JsonValue& v) {
   }
 }
 
-Density read_raster(const JsonValue& v, const std::filesystem::path& base_dir,
-                    const Environment& env) {
-  v.only_keys({"type", "file", "extent", "interpolation", "scale"});
-  const JsonValue file = v.at("file");
-  const std::filesystem::path path = base_dir / file.string();
-  const JsonValue extent = v.at("extent");
-  if (extent.size() != 2) extent.fail("expected [[x_min, y_min], [x_max, y_max]]");
-  const Box box{extent[0].point(), extent[1].point()};
-  if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y))
-    extent.fail("expected [[x_min, y_min], [x_max, y_max]] with min < max");
-  if (!box.contains(env.bounds()))
-    extent.fail("the raster must cover the environment's bounding box");
-  Raster::Interpolation interp = Raster::Interpolation::constant;
-  if (auto i = v.find("interpolation")) {
-    interp = i->one_of({"constant", "bilinear"}) == "bilinear" ? Raster::Interpolation::bilinear
-                                                               : Raster::Interpolation::constant;
-  }
-  const double scale = v.find("scale") ? v.at("scale").positive() : 1.0;
-  std::vector<std::vector<double>> rows;
-  const std::string ext = path.extension().string();
-  try {
-    if (ext == ".csv") {
-      rows = read_raster_csv(path);
-    } else if (ext == ".pgm") {
-      rows = read_raster_pgm(path);
-    } else {
-      file.fail("expected a .csv or .pgm file");
-    }
-    for (auto& row : rows) {
-      for (double& x : row)
-        x *= scale;
-    }
-    return Density::raster(make_raster(rows, box, interp));
-  } catch (const ScenarioError&) {
-    throw;
-  } catch (const std::exception& e) {
-    file.fail(e.what());
-  }
-}
-
 std::shared_ptr<const Density> read_density(const JsonValue& v,
                                             const std::filesystem::path& base_dir,
                                             const Environment& env) {
-  const std::string type = v.at("type").one_of({"uniform", "gaussian_mixture", "raster"});
+  const ComponentChoice c = read_component(v, density_registry(), "type");
   std::shared_ptr<const Density> d;
-  if (type == "uniform") {
-    v.only_keys({"type", "value"});
-    d = std::make_shared<const Density>(
-        Density::uniform(v.find("value") ? v.at("value").positive() : 1.0));
-  } else if (type == "gaussian_mixture") {
-    v.only_keys({"type", "components", "floor"});
-    std::vector<GaussianComponent> cs;
-    const JsonValue list = v.at("components");
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const JsonValue c = list[i];
-      c.only_keys({"mean", "sigma", "weight"});
-      cs.push_back(GaussianComponent{c.at("mean").point(), c.at("sigma").positive(),
-                                     c.at("weight").non_negative()});
-    }
-    const double floor = v.find("floor") ? v.at("floor").non_negative() : 0.0;
-    d = std::make_shared<const Density>(Density::gaussian_mixture(std::move(cs), floor));
-  } else {
-    d = std::make_shared<const Density>(read_raster(v, base_dir, env));
+  try {
+    d = density_registry().at(c.type).make(DensityContext{env, base_dir}, c.params);
+  } catch (const ParamError& e) {
+    fail_param(v, e);
+  } catch (const std::invalid_argument& e) {
+    v.fail(e.what());
   }
   if (!(CellIntegrator(env, *d).total_mass() > 0.0))
     v.fail("the density has no mass on the environment");

@@ -81,6 +81,7 @@ struct Box {
     return lo.x <= o.lo.x && o.hi.x <= hi.x && lo.y <= o.lo.y && o.hi.y <= hi.y;
   }
   Vec2 size() const { return hi - lo; }
+  friend bool operator==(const Box&, const Box&) = default;
 };
 
 }  // namespace covsim

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/geometry/uniform_density.hpp"
 #include "analysis/coverage_run.hpp"
 #include "core/fingerprint.hpp"
 #include "scenarios/scenario.hpp"
@@ -126,7 +127,7 @@ TEST_CASE("in a convex room the method is plain Lloyd", "[coverage]") {
   run_coverage(s, &steps);
   CHECK(steps.gap < 1e-12);  // real and virtual generators coincide throughout
   // The positions after k steps are the k-th iterate of Lloyd's algorithm.
-  const Density d = Density::uniform();
+  const UniformDensity d;
   const CellIntegrator integrator(*s.environment, d);
   std::vector<Vec2> lloyd = s.robot_positions;
   int k = 0;

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include "core/geometry/uniform_density.hpp"
 #include "analysis/coverage_run.hpp"
 #include "scenarios/scenario.hpp"
 #include "tests/robot/paper_scenarios.hpp"
@@ -66,7 +67,7 @@ TEST_CASE("at 100% loss every robot covers Ω alone, and the run ends", "[networ
   const CoverageOutcome out = run_coverage(s);
   CHECK(out.network.delivered == 0);
   // Alone, each robot's cell is Ω: all head for Ω's centroid (or its projection).
-  const Density d = Density::uniform();
+  const UniformDensity d;
   const CellIntegrator integrator(*s.environment, d);
   const VoronoiPartition whole(integrator, {Vec2{0.5, 0.5}});
   const Vec2 c = whole.summary(0).centroid;

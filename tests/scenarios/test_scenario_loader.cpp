@@ -81,7 +81,7 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
   expect_error(
       "{" + kSquare +
           R"(, "density": {"type": "gaussian_mixture", "components": [{"mean": [1, 1], "sigma": -1, "weight": 1}]}})",
-      "$.density.components[0].sigma: expected a positive number");
+      "$.density.components[0].sigma: expected a number > 0, found -1");
   expect_error(
       "{" + kSquare +
           R"(, "density": {"type": "gaussian_mixture", "components": [{"mean": [1, 1], "sigma": 1, "weight": 1, "colour": 2}]}})",

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/geometry/geometry_error.hpp"
+#include "core/geometry/uniform_density.hpp"
 #include "core/geometry/voronoi_partition.hpp"
 #include "core/random_stream.hpp"
 #include "tests/core/geometry/shapes.hpp"
@@ -14,11 +15,10 @@ namespace {
 
 struct World {
   Environment env;
-  Density density;
+  UniformDensity density;
   CellIntegrator cells;
-  World(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes,
-        Density d = Density::uniform())
-      : env(std::move(outer), std::move(holes)), density(std::move(d)), cells(env, density) {}
+  World(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes)
+      : env(std::move(outer), std::move(holes)), cells(env, density) {}
 };
 
 void check_summary(const CellSummary& s, double mass, Vec2 centroid, double cost) {

@@ -6,6 +6,9 @@
 
 #include <unistd.h>
 
+#include "core/geometry/gaussian_mixture_density.hpp"
+#include "core/geometry/raster_density.hpp"
+#include "core/geometry/uniform_density.hpp"
 #include "core/geometry/quadrature.hpp"
 #include "core/geometry/voronoi_partition.hpp"
 #include "tests/core/geometry/shapes.hpp"
@@ -60,7 +63,7 @@ TEST_CASE("Gaussian mixture mass and centroid to 1e-6 at sigma = diameter / 20",
   const Vec2 mu{0.3, -0.2};
   const double floor = 0.05;
   const Environment env(square(-1, -1, 1, 1), {});
-  const Density d = Density::gaussian_mixture({{mu, sigma, 2.0}}, floor);
+  const GaussianMixtureDensity d({{mu, sigma, 2.0}}, floor);
   const CellIntegrator cells(env, d);
   // Closed form on the square, separable in x and y.
   const double mass = 2.0 * g0(-1, 1, mu.x, sigma) * g0(-1, 1, mu.y, sigma) + floor * 4.0;
@@ -117,7 +120,7 @@ TEST_CASE("constant and bilinear rasters integrate exactly", "[density]") {
       make_raster({{3, 4}, {1, 2}}, Box{{0, 0}, {2, 2}}, Raster::Interpolation::constant);
   CHECK(r({0.5, 0.5}) == 1);
   CHECK(r({1.5, 1.5}) == 4);
-  const Density d = Density::raster(r);
+  const RasterDensity d(r);
   const CellIntegrator cells(env, d);
   VoronoiPartition part(cells, {{0.3, 1.0}, {1.7, 1.0}});  // split at x = 1
   CHECK(part.summary(0).mass == Approx(1 + 3));
@@ -128,7 +131,7 @@ TEST_CASE("constant and bilinear rasters integrate exactly", "[density]") {
   const Raster b =
       make_raster({{5, 7}, {1, 3}}, Box{{0, 0}, {2, 2}}, Raster::Interpolation::bilinear);
   CHECK(b({1, 1}) == Approx(4));
-  const Density db = Density::raster(b);
+  const RasterDensity db(b);
   const CellIntegrator cb(env, db);
   // ∫ (1 + x + 2y) over [0,2]² = 4 + 4 + 8 = 16; ∫ x(1 + x + 2y) = 4 + 16/3 + 8 = 52/3.
   VoronoiPartition whole(cb, {{1, 1}});
@@ -164,9 +167,9 @@ TEST_CASE("rasters load from CSV and PGM, and bad files are reported", "[density
 }
 
 TEST_CASE("densities reject invalid parameters", "[density]") {
-  CHECK_THROWS(Density::uniform(0.0));
-  CHECK_THROWS(Density::gaussian_mixture({{{0, 0}, 0.0, 1.0}}, 0.0));
-  CHECK_THROWS(Density::gaussian_mixture({{{0, 0}, 1.0, -1.0}}, 0.0));
-  CHECK_THROWS(Density::gaussian_mixture({{{NAN, 0}, 1.0, 1.0}}, 0.0));
-  CHECK_THROWS(Density::gaussian_mixture({}, -1.0));
+  CHECK_THROWS(UniformDensity(0.0));
+  CHECK_THROWS(GaussianMixtureDensity({{{0, 0}, 0.0, 1.0}}, 0.0));
+  CHECK_THROWS(GaussianMixtureDensity({{{0, 0}, 1.0, -1.0}}, 0.0));
+  CHECK_THROWS(GaussianMixtureDensity({{{NAN, 0}, 1.0, 1.0}}, 0.0));
+  CHECK_THROWS(GaussianMixtureDensity({}, -1.0));
 }

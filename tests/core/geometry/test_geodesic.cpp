@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/geometry/uniform_density.hpp"
 #include "core/geometry/geodesic_partition.hpp"
 #include "tests/core/geometry/shapes.hpp"
 
@@ -13,7 +14,7 @@ TEST_CASE("in a convex room geodesic cells are Voronoi cells and the step is the
   const Environment env(square(0, 0, 1, 1), {});
   const VisibilityGraph graph(env);
   CHECK(graph.vertices().empty());
-  const Density phi = Density::uniform();
+  const UniformDensity phi;
   const GeodesicLattice lattice(graph, phi, 0.01);
   CHECK(lattice.points().size() == 10000);
   CHECK(lattice.total_mass() == Approx(1.0).epsilon(1e-12));
@@ -46,7 +47,7 @@ TEST_CASE("geodesic distances round a corner are the hand-computed ones", "[geod
   const VisibilityGraph graph(env);
   REQUIRE(graph.vertices().size() == 1);
   CHECK(graph.vertices()[0] == Vec2{1, 1});
-  const Density phi = Density::uniform();
+  const UniformDensity phi;
   const GeodesicLattice lattice(graph, phi, 0.05);
   CHECK(lattice.total_mass() == Approx(3.0).epsilon(1e-12));
   const Vec2 p{1.8, 0.9};
@@ -70,7 +71,7 @@ TEST_CASE("geodesic distances round a corner are the hand-computed ones", "[geod
 TEST_CASE("two generators split an L by geodesic distance", "[geodesic]") {
   const Environment env({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {});
   const VisibilityGraph graph(env);
-  const Density phi = Density::uniform();
+  const UniformDensity phi;
   const GeodesicLattice lattice(graph, phi, 0.05);
   // One generator in each arm, at the same geodesic distance from the corner.
   const GeodesicPartition part(lattice, {{1.5, 0.5}, {0.5, 1.5}});
