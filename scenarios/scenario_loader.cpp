@@ -5,6 +5,8 @@
 #include "core/geometry/density_registry.hpp"
 #include "core/geometry/geometry_error.hpp"
 #include "core/geometry/ring_validation.hpp"
+#include "net/delay_registry.hpp"
+#include "net/loss_registry.hpp"
 #include "scenarios/component_reader.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
@@ -78,44 +80,19 @@ void read_network(const JsonValue& v, NetworkConfig& n) {
     n.acquire_timeout = SimTime::from_seconds(s);
   }
   if (auto loss = v.find("loss")) {
-    const std::string model =
-        loss->at("model").one_of({"none", "bernoulli", "gilbert_elliott", "distance"});
-    if (model == "none") {
-      loss->only_keys({"model"});
-      n.channel.loss = NoLoss{};
-    } else if (model == "bernoulli") {
-      loss->only_keys({"model", "p"});
-      n.channel.loss = BernoulliLoss{loss->at("p").probability()};
-    } else if (model == "gilbert_elliott") {
-      loss->only_keys({"model", "p_good_to_bad", "p_bad_to_good", "loss_good", "loss_bad"});
-      n.channel.loss = GilbertElliottLoss{
-          loss->at("p_good_to_bad").probability(), loss->at("p_bad_to_good").probability(),
-          loss->at("loss_good").probability(), loss->at("loss_bad").probability()};
-    } else {
-      loss->only_keys({"model", "p_min", "d_max", "exponent"});
-      n.channel.loss = DistanceLoss{loss->at("p_min").probability(), loss->at("d_max").positive(),
-                                    loss->at("exponent").positive()};
+    const ComponentChoice c = read_component(*loss, loss_registry(), "model");
+    try {
+      n.channel.loss = loss_registry().at(c.type).make(c.params);
+    } catch (const ParamError& e) {
+      fail_param(*loss, e);
     }
   }
   if (auto delay = v.find("delay")) {
-    const std::string model =
-        delay->at("model").one_of({"constant", "uniform", "exponential", "lognormal"});
-    if (model == "constant") {
-      delay->only_keys({"model", "value"});
-      n.channel.delay = ConstantDelay{delay->at("value").non_negative()};
-    } else if (model == "uniform") {
-      delay->only_keys({"model", "min", "max"});
-      const double lo = delay->at("min").non_negative(), hi = delay->at("max").non_negative();
-      if (hi < lo) delay->at("max").fail(fmt::format("expected max >= min ({}), found {}", lo, hi));
-      n.channel.delay = UniformDelay{lo, hi};
-    } else if (model == "exponential") {
-      delay->only_keys({"model", "base", "mean"});
-      n.channel.delay =
-          ExponentialDelay{delay->at("base").non_negative(), delay->at("mean").non_negative()};
-    } else {
-      delay->only_keys({"model", "base", "mu", "sigma"});
-      n.channel.delay = LogNormalDelay{delay->at("base").non_negative(), delay->at("mu").number(),
-                                       delay->at("sigma").non_negative()};
+    const ComponentChoice c = read_component(*delay, delay_registry(), "model");
+    try {
+      n.channel.delay = delay_registry().at(c.type).make(c.params);
+    } catch (const ParamError& e) {
+      fail_param(*delay, e);
     }
   }
 }

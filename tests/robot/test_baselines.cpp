@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "net/bernoulli_loss.hpp"
 #include "analysis/coverage_run.hpp"
 #include "core/geometry/visibility_graph.hpp"
 #include "scenarios/scenario.hpp"
@@ -144,7 +145,7 @@ TEST_CASE("the baselines run decentralized, from what each robot hears", "[basel
     Scenario s = paper("u_shape.json");
     s.coverage.controller.kind = k;
     s.coverage.controller.resolution = s.environment->diameter() / 50.0;
-    s.coverage.network.channel.loss = BernoulliLoss{0.3};
+    s.coverage.network.channel.loss = std::make_shared<const BernoulliLoss>(0.3);
     INFO(to_string(k));
     const CoverageOutcome out = run(s);
     CHECK(out.decentralized);

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "net/bernoulli_loss.hpp"
 #include "analysis/final_json.hpp"
 #include "core/geometry/visibility_graph.hpp"
 #include "planners/planner_factory.hpp"
@@ -155,7 +156,7 @@ struct Generators final : CoverageObserver {
 TEST_CASE("decentralized robots hear their neighbours before their first Lloyd step",
           "[liveness]") {
   Scenario s = paper("u_shape.json");
-  s.coverage.network.channel.loss = BernoulliLoss{0.0};  // decentralized, nothing lost
+  s.coverage.network.channel.loss = std::make_shared<const BernoulliLoss>(0.0);  // decentralized, nothing lost
   Generators g;
   const auto out = run_coverage(s, &g);
   CHECK(out.decentralized);
@@ -184,7 +185,7 @@ TEST_CASE("decentralized robots hear their neighbours before their first Lloyd s
 
 TEST_CASE("a robot that hears nobody starts alone after the acquisition deadline", "[liveness]") {
   Scenario s = paper("u_shape.json");
-  s.coverage.network.channel.loss = BernoulliLoss{1.0};  // every message lost
+  s.coverage.network.channel.loss = std::make_shared<const BernoulliLoss>(1.0);  // every message lost
   s.coverage.network.acquire_timeout = SimTime::from_seconds(2.0);
   s.coverage.max_time = SimTime::from_seconds(5.0);
   Generators g;
@@ -220,7 +221,7 @@ TEST_CASE("office with periodic loop 1 under message loss converges", "[liveness
   Scenario s = paper("office.json");
   s.coverage.mode = LoopMode::periodic;
   s.coverage.loop1_period = SimTime::from_seconds(0.5);
-  s.coverage.network.channel.loss = BernoulliLoss{0.1};
+  s.coverage.network.channel.loss = std::make_shared<const BernoulliLoss>(0.1);
   s.seed = 3;
   const auto out = run_coverage(s);
   CHECK(out.converged);

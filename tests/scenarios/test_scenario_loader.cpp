@@ -108,7 +108,7 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
                "$.network.loss: missing required key \"p\"");
   expect_error(
       "{" + kSquare + ", " + d + R"(, "network": {"loss": {"model": "bernoulli", "p": 2}}})",
-      "$.network.loss.p: expected a probability");
+      "$.network.loss.p: expected a number >= 0 and <= 1, found 2");
   expect_error("{" + kSquare + ", " + d +
                    R"(, "network": {"delay": {"model": "uniform", "min": 0.2, "max": 0.1}}})",
                "$.network.delay.max: expected max >= min");
