@@ -13,7 +13,7 @@
 #include "core/geometry/visibility_graph.hpp"
 #include "core/random_stream.hpp"
 #include "planners/grid_astar.hpp"
-#include "planners/planner_factory.hpp"
+#include "planners/planner_registry.hpp"
 #include "planners/tangent_bug.hpp"
 #include "scenarios/obstacle_course.hpp"
 
@@ -143,10 +143,11 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
 
   PlannerConfig config;
   config.type = setup.planner;
-  config.resolution = setup.resolution.value_or(map.spec.clearance / 4.0);
+  const double resolution = setup.resolution.value_or(map.spec.clearance / 4.0);
+  if (setup.planner == "grid_astar") config.params.set("resolution", resolution);
   const SensorSpec sensor{setup.noise_sigma};
   std::unique_ptr<Planner> planner =
-      setup.make ? setup.make(env, sensor) : PlannerFactory(env, config, sensor).make();
+      setup.make ? setup.make(env, sensor) : planner_source(config, {env, sensor})();
   RandomStream noise(seed, index, "contract-noise");
   const auto max_steps =
       static_cast<std::size_t>(12.0 * (map.boundary_length + env.diameter()) / setup.step + 1000.0);
@@ -210,7 +211,7 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
     res.bound = res.shortest * (1.0 + 1e-9) + tol;
   } else if (setup.planner == "grid_astar") {
     const std::size_t turns = path.points.size() >= 2 ? path.points.size() - 2 : 0;
-    res.bound = grid_path_bound(res.shortest, turns, *config.resolution) + tol;
+    res.bound = grid_path_bound(res.shortest, turns, resolution) + tol;
   } else if (const auto* bug = dynamic_cast<const TangentBug*>(planner.get())) {
     res.bound = res.shortest + tol;
     // Each boundary-following episode, and each obstacle only steered round, once.

@@ -31,7 +31,7 @@
 
 #include "core/geometry/vec2.hpp"
 #include "planners/planner.hpp"
-#include "planners/planner_factory.hpp"
+#include "planners/planner_entry.hpp"
 
 namespace covsim {
 

@@ -3,6 +3,7 @@
 // `--case I` for one case in detail. Prints a summary and one reproducer line per failing
 // case; exit 1 if any case failed.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <nlohmann/json.hpp>
 
@@ -15,7 +16,7 @@
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "core/atomic_file.hpp"
-#include "planners/planner_factory.hpp"
+#include "planners/planner_registry.hpp"
 
 namespace covsim::app {
 
@@ -104,9 +105,11 @@ void add_planner_contract_command(CLI::App& app) {
       ->check(CLI::Range(1u, 256u))
       ->capture_default_str();
   cmd->callback([o] {
-    const auto& names = planner_names();
-    if (std::find(names.begin(), names.end(), o->setup.planner) == names.end())
-      throw InputError("planner-contract: --planner: unknown planner \"" + o->setup.planner + "\"");
+    if (planner_registry().find(o->setup.planner) == nullptr) {
+      throw InputError(
+          fmt::format("planner-contract: --planner: unknown planner \"{}\" (registered: {})",
+                      o->setup.planner, fmt::join(planner_registry().names(), ", ")));
+    }
     o->setup.range = parse_range(o->range);
     o->setup.complete = !o->incomplete;
     if (o->one) {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/random_stream.hpp"
-#include "planners/planner_factory.hpp"
+#include "planners/planner_registry.hpp"
 #include "scenarios/scenario.hpp"
 
 namespace {
@@ -30,12 +30,12 @@ void BM_PlannerStep(benchmark::State& state, const char* planner) {
   const double step = s.coverage.max_speed * s.coverage.loop2_period.seconds();
   PlannerConfig config;
   config.type = planner;
-  PlannerFactory factory(env, config);
+  const PlannerSource source = planner_source(config, PlannerContext{env, SensorSpec{}});
   // Goals spread over the rooms, visited one after another from the first robot's start.
   RandomStream rng(1, 0, "bench-goals");
   std::vector<Episode> episodes;
   Vec2 x = s.robot_positions.front();
-  auto recorder = factory.make();
+  auto recorder = source();
   while (episodes.size() < 8) {
     const Vec2 g{rng.uniform(env.bounds().lo.x, env.bounds().hi.x),
                  rng.uniform(env.bounds().lo.y, env.bounds().hi.y)};
@@ -50,7 +50,7 @@ void BM_PlannerStep(benchmark::State& state, const char* planner) {
     }
     episodes.push_back(std::move(e));
   }
-  auto timed = factory.make();
+  auto timed = source();
   std::size_t ep = 0, k = 0, steps = 0;
   timed->set_goal(episodes[0].goal);
   for (auto _ : state) {

@@ -82,4 +82,32 @@ std::optional<std::vector<Vec2>> GridAStar::plan(Vec2 start, Vec2 goal) {
   return shorten(env_, path);
 }
 
+PlannerEntry grid_astar_entry() {
+  PlannerEntry e;
+  e.name = "grid_astar";
+  e.description = "8-connected A* on an occupancy grid of the map, shortened by line of sight";
+  e.params = {ParamSpec::number("resolution", "m", "the grid's cell side")
+                  .greater_than(0)
+                  .derived("1/200 of the diameter of Ω's bounding box")};
+  const auto resolution = [](const Environment& env, const Params& p) {
+    return p.maybe_number("resolution").value_or(env.diameter() / 200.0);
+  };
+  e.check = [resolution](const Environment& env, const Params& p) {
+    const double h = resolution(env, p);
+    const Vec2 size = env.bounds().size();
+    constexpr double kMaxCells = double(1 << 24);
+    if (std::ceil(size.x / h) * std::ceil(size.y / h) > kMaxCells) {
+      throw ParamError("resolution",
+                       "resolution too fine for this environment: more than 16777216 cells");
+    }
+  };
+  e.make = [resolution](const PlannerContext& ctx, const Params& p) -> PlannerSource {
+    auto grid =
+        std::make_shared<const OccupancyGrid>(ctx.environment, resolution(ctx.environment, p));
+    const Environment* env = &ctx.environment;
+    return [env, grid] { return std::make_unique<GridAStar>(*env, grid); };
+  };
+  return e;
+}
+
 }  // namespace covsim

@@ -13,6 +13,7 @@
 
 #include "core/geometry/occupancy_grid.hpp"
 #include "planners/map_planner.hpp"
+#include "planners/planner_entry.hpp"
 
 namespace covsim {
 
@@ -30,5 +31,7 @@ class GridAStar final : public MapPlanner {
 // The worst-case path length the grid planner promises for a shortest path of length
 // `shortest` turning at `turns` reflex vertices, on a grid of resolution h.
 double grid_path_bound(double shortest, std::size_t turns, double h);
+
+PlannerEntry grid_astar_entry();
 
 }  // namespace covsim

@@ -77,4 +77,30 @@ PlanStep PotentialField::step(const SensorReading& r, double max_step) {
   return PlanStep{env_.advance(x, x + (std::min(max_step, dg) / fn) * f), status_};
 }
 
+PlannerEntry potential_field_entry() {
+  PlannerEntry e;
+  e.name = "potential_field";
+  e.description = "Khatib's attractive and repulsive potentials over what the range sensor sees";
+  e.params = {
+      ParamSpec::number("influence", "m", "distance d0 within which walls repel")
+          .greater_than(0)
+          .derived("1/10 of the diameter of Ω's bounding box"),
+      ParamSpec::number("repulsive_gain", "", "η in units of d0³/48").at_least(0).defaults_to(1.0),
+      ParamSpec::integer("stall_window", "steps",
+                         "steps without progress after which it reports a stall")
+          .at_least(1)
+          .at_most(1e6)
+          .defaults_to(std::uint64_t{50})};
+  e.make = [](const PlannerContext& ctx, const Params& params) -> PlannerSource {
+    PotentialFieldParams p = PotentialFieldParams::for_environment(ctx.environment.diameter());
+    if (auto v = params.maybe_number("influence")) p.influence = *v;
+    p.repulsive_gain = params.number("repulsive_gain");
+    p.stall_window = static_cast<std::size_t>(params.integer("stall_window"));
+    p.progress = std::max(p.progress, 3.0 * ctx.sensor.noise_sigma);
+    const Environment* env = &ctx.environment;
+    return [env, p] { return std::make_unique<PotentialField>(*env, p); };
+  };
+  return e;
+}
+
 }  // namespace covsim

@@ -17,6 +17,7 @@
 
 #include "core/geometry/environment.hpp"
 #include "planners/planner.hpp"
+#include "planners/planner_entry.hpp"
 
 namespace covsim {
 
@@ -46,5 +47,7 @@ class PotentialField final : public Planner {
   double best_ = 0.0;           // least distance to the goal so far
   std::size_t since_best_ = 0;  // steps since it last fell by `progress`
 };
+
+PlannerEntry potential_field_entry();
 
 }  // namespace covsim

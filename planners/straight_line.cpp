@@ -23,4 +23,15 @@ PlanStep StraightLine::step(const SensorReading& r, double max_step) {
   return PlanStep{next, status_};
 }
 
+PlannerEntry straight_line_entry() {
+  PlannerEntry e;
+  e.name = "straight_line";
+  e.description = "straight at the target; stops at the first wall (contact only)";
+  e.make = [](const PlannerContext& ctx, const Params&) -> PlannerSource {
+    const Environment* env = &ctx.environment;
+    return [env] { return std::make_unique<StraightLine>(*env); };
+  };
+  return e;
+}
+
 }  // namespace covsim

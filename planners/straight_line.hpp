@@ -4,6 +4,7 @@
 // blocks the way (a goal inside an obstacle always ends so). Never leaves Ω.
 #include "core/geometry/environment.hpp"
 #include "planners/planner.hpp"
+#include "planners/planner_entry.hpp"
 
 namespace covsim {
 
@@ -19,5 +20,7 @@ class StraightLine final : public Planner {
   Vec2 goal_;
   PlanStatus status_ = PlanStatus::reached;
 };
+
+PlannerEntry straight_line_entry();
 
 }  // namespace covsim

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/environment.hpp"
 #include "planners/local_tangent_graph.hpp"
 
 namespace covsim {
@@ -271,6 +272,24 @@ PlanStep TangentBug::walk(const SensorReading& r, double max_step, std::optional
   const PlanStep s = move_toward(x, target, max_step);
   walked_ += distance(x, s.next);
   return s;
+}
+
+PlannerEntry tangent_bug_entry() {
+  PlannerEntry e;
+  e.name = "tangent_bug";
+  e.description =
+      "TangentBug (Kamon et al. 1998) with target projection; range sensor of any range";
+  e.make = [](const PlannerContext& ctx, const Params&) -> PlannerSource {
+    double boundary = 0.0;
+    for (const BoundaryEdge& b : ctx.environment.boundary())
+      boundary += distance(b.a, b.b);
+    TangentBugParams p = TangentBugParams::for_environment(ctx.environment.diameter(), boundary);
+    // A decrease smaller than the sensor's noise is no progress: three standard deviations.
+    p.progress = std::max(p.progress, 3.0 * ctx.sensor.noise_sigma);
+    p.noise_margin = 3.0 * ctx.sensor.noise_sigma;
+    return [p] { return std::make_unique<TangentBug>(p); };
+  };
+  return e;
 }
 
 }  // namespace covsim

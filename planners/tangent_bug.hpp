@@ -41,6 +41,7 @@
 
 #include "planners/obstacle_memory.hpp"
 #include "planners/planner.hpp"
+#include "planners/planner_entry.hpp"
 
 namespace covsim {
 
@@ -120,5 +121,7 @@ class TangentBug final : public Planner {
   void engage(std::uint32_t ring);
   std::uint32_t loops_ = 0, recoveries_ = 0;
 };
+
+PlannerEntry tangent_bug_entry();
 
 }  // namespace covsim

@@ -8,4 +8,15 @@ std::optional<std::vector<Vec2>> VisibilityGraphPlanner::plan(Vec2 start, Vec2 g
   return std::move(p.points);
 }
 
+PlannerEntry visibility_graph_entry() {
+  PlannerEntry e;
+  e.name = "visibility_graph";
+  e.description = "exact shortest paths in Ω: A* on the visibility graph of its reflex vertices";
+  e.make = [](const PlannerContext& ctx, const Params&) -> PlannerSource {
+    auto graph = std::make_shared<const VisibilityGraph>(ctx.environment);
+    return [graph] { return std::make_unique<VisibilityGraphPlanner>(graph); };
+  };
+  return e;
+}
+
 }  // namespace covsim

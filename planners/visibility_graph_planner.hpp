@@ -5,6 +5,7 @@
 
 #include "core/geometry/visibility_graph.hpp"
 #include "planners/map_planner.hpp"
+#include "planners/planner_entry.hpp"
 
 namespace covsim {
 
@@ -18,5 +19,7 @@ class VisibilityGraphPlanner final : public MapPlanner {
   std::optional<std::vector<Vec2>> plan(Vec2 start, Vec2 goal) override;
   std::shared_ptr<const VisibilityGraph> graph_;
 };
+
+PlannerEntry visibility_graph_entry();
 
 }  // namespace covsim

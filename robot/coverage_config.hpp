@@ -7,7 +7,7 @@
 
 #include "core/sim_time.hpp"
 #include "net/channel.hpp"
-#include "planners/planner_factory.hpp"
+#include "planners/planner_entry.hpp"
 
 namespace covsim {
 

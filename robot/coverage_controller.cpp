@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/geometry/delaunay.hpp"
+#include "planners/planner_registry.hpp"
 
 namespace covsim {
 
@@ -36,7 +37,8 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
       env_(env),
       integrator_(env, density),
       config_(std::move(config)),
-      planners_(env, config_.planner, SensorSpec{config_.sensor_noise_sigma}) {
+      planners_(planner_source(config_.planner,
+                               PlannerContext{env, SensorSpec{config_.sensor_noise_sigma}})) {
   position_tol_ = config_.position_tolerance.value_or(1e-3 * env.diameter());
   virtual_tol_ = config_.virtual_tolerance.value_or(1e-3 * env.diameter());
   step_ = config_.max_speed * config_.loop2_period.seconds();
@@ -45,7 +47,7 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
     r.id = i;
     r.position = r.virtual_generator = r.virtual_target = r.real_target = r.goal = r.assigned =
         starts[i];
-    r.planner = make_planner ? make_planner(i) : planners_.make();
+    r.planner = make_planner ? make_planner(i) : planners_();
     robots_.push_back(std::move(r));
   }
   if (config_.controller.kind == ControllerKind::geodesic_lloyd) {

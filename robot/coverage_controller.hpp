@@ -156,7 +156,7 @@ class CoverageController {
   std::vector<Robot> robots_;
   CoverageObserver* observer_ = nullptr;
   std::unique_ptr<VoronoiPartition> virtual_partition_, real_partition_;
-  PlannerFactory planners_;
+  PlannerSource planners_;
   std::unique_ptr<VisibilityGraph> graph_;  // geodesic_lloyd
   std::unique_ptr<GeodesicLattice> lattice_points_;
   std::unique_ptr<GeodesicPartition> geodesic_partition_;

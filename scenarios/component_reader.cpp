@@ -80,8 +80,7 @@ nlohmann::ordered_json params_to_json(const Params& p) {
           using T = std::decay_t<decltype(x)>;
           if constexpr (std::is_same_v<T, std::monostate>) return nullptr;
           if constexpr (std::is_same_v<T, Vec2>) return {x.x, x.y};
-          if constexpr (std::is_same_v<T, Box>)
-            return {{x.lo.x, x.lo.y}, {x.hi.x, x.hi.y}};
+          if constexpr (std::is_same_v<T, Box>) return {{x.lo.x, x.lo.y}, {x.hi.x, x.hi.y}};
           if constexpr (std::is_same_v<T, ParamObjects>) {
             nlohmann::ordered_json a = nlohmann::ordered_json::array();
             for (const Params& o : x)
@@ -116,7 +115,8 @@ ComponentChoice read_component(const JsonValue& section,
   for (const ComponentInfo* c : registered) {
     if (c->name == choice.type) selected = c;
   }
-  if (selected == nullptr) section.fail(fmt::format("no {} \"{}\" is registered", kind, choice.type));
+  if (selected == nullptr)
+    section.fail(fmt::format("no {} \"{}\" is registered", kind, choice.type));
   // Every per-type section is checked against its own type's schema.
   std::optional<JsonValue> own;
   for (const ComponentInfo* c : registered) {
@@ -152,11 +152,13 @@ ComponentChoice read_component(const JsonValue& section,
     if (auto v = section.find(s.name)) flat.set(s.name, read_value(*v, s));
   }
   if (own) {
-    for (const auto& [name, value] : read_params(*own, selected->params).values()) {
+    const Params from_own = read_params(*own, selected->params);
+    for (const auto& [name, value] : from_own.values()) {
       // Only what the per-type section sets explicitly, not its defaults.
       if (!own->find(name)) continue;
       if (section.find(name))
-        own->at(name).fail(fmt::format("\"{}\" is set twice, here and in {}", name, section.path()));
+        own->at(name).fail(
+            fmt::format("\"{}\" is set twice, here and in {}", name, section.path()));
       flat.set(name, value);
     }
   }

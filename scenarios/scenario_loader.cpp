@@ -7,6 +7,7 @@
 #include "core/geometry/ring_validation.hpp"
 #include "net/delay_registry.hpp"
 #include "net/loss_registry.hpp"
+#include "planners/planner_registry.hpp"
 #include "scenarios/component_reader.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
@@ -103,20 +104,8 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     if (auto v = r->find("max_speed")) c.max_speed = v->positive();
   }
   if (auto p = root.find("planner")) {
-    PlannerConfig& pc = c.planner;
-    pc.type = p->at("type").one_of(
-        {"tangent_bug", "potential_field", "grid_astar", "visibility_graph", "straight_line"});
-    // Every planner's parameters are accepted whatever the type (each planner reads its
-    // own), so that a sweep can vary the type with parameters set.
-    p->only_keys({"type", "influence", "repulsive_gain", "stall_window", "resolution"});
-    if (auto v = p->find("influence")) pc.influence = v->positive();
-    if (auto v = p->find("repulsive_gain")) pc.repulsive_gain = v->non_negative();
-    if (auto v = p->find("stall_window")) {
-      const std::uint64_t w = v->unsigned_integer();
-      if (w == 0 || w > 1'000'000) v->fail("expected a whole number of steps from 1 to 10^6");
-      pc.stall_window = static_cast<std::size_t>(w);
-    }
-    if (auto v = p->find("resolution")) pc.resolution = v->positive();
+    const ComponentChoice choice = read_component(*p, planner_registry(), "type", "tangent_bug");
+    c.planner = PlannerConfig{choice.type, choice.params};
   }
   if (auto k = root.find("controller")) {
     ControllerConfig& cc = c.controller;
@@ -214,7 +203,13 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
           .fail(fmt::format("resolution too fine for this environment: more than {} cells", limit));
     }
   };
-  check_cells(s.coverage.planner.resolution, "planner", double(1 << 24));
+  if (const auto& check = planner_registry().at(s.coverage.planner.type).check) {
+    try {
+      check(*s.environment, s.coverage.planner.params);
+    } catch (const ParamError& e) {
+      fail_param(root.at("planner"), e);
+    }
+  }
   check_cells(s.coverage.controller.resolution, "controller", double(1 << 22));
   return s;
 }

@@ -6,7 +6,7 @@
 #include "core/geometry/occupancy_grid.hpp"
 #include "core/geometry/visibility_graph.hpp"
 #include "planners/grid_astar.hpp"
-#include "planners/planner_factory.hpp"
+#include "planners/planner_registry.hpp"
 #include "planners/planner_run.hpp"
 #include "planners/potential_field.hpp"
 #include "planners/visibility_graph_planner.hpp"
@@ -224,16 +224,16 @@ TEST_CASE("potential_field reports a stall in local minima: a spiral, a maze, a 
 
 TEST_CASE("every planner ends in bounded time on a goal inside an obstacle", "[planners]") {
   const Environment env = test::room_with_cup();
-  for (std::string_view name : planner_names()) {
+  for (const std::string& name : planner_registry().names()) {
     INFO(name);
     const PlannerRun run = go(env, name, {1, 2}, {2.05, 2}, 0.5);
     CHECK(run.status != PlanStatus::reached);
   }
 }
 
-TEST_CASE("the factory knows every planner and rejects others", "[planners]") {
+TEST_CASE("the registry knows every planner and rejects others", "[planners]") {
   const Environment env = one_obstacle();
-  for (std::string_view name : planner_names())
+  for (const std::string& name : planner_registry().names())
     CHECK(make_planner(name, env)->name() == name);
   CHECK_THROWS_WITH(make_planner("rrt", env), Catch::Contains("unknown planner \"rrt\""));
 }

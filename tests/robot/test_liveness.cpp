@@ -9,10 +9,10 @@
 #include <map>
 #include <set>
 
-#include "net/bernoulli_loss.hpp"
 #include "analysis/final_json.hpp"
 #include "core/geometry/visibility_graph.hpp"
-#include "planners/planner_factory.hpp"
+#include "net/bernoulli_loss.hpp"
+#include "planners/planner_registry.hpp"
 #include "planners/planner_run.hpp"
 #include "planners/tangent_bug.hpp"
 #include "tests/robot/paper_scenarios.hpp"
@@ -91,9 +91,10 @@ TEST_CASE("the controller hands a planner a goal again only when the target has 
       Scenario s = paper(name);
       s.coverage.mode = mode;
       std::map<std::uint32_t, std::vector<std::pair<Vec2, PlanStatus>>> goals;
-      PlannerFactory factory(*s.environment, s.coverage.planner);
+      const PlannerSource source =
+          planner_source(s.coverage.planner, PlannerContext{*s.environment, SensorSpec{}});
       const auto out = run_coverage(s, nullptr, nullptr, [&](std::uint32_t i) {
-        return std::make_unique<GoalLog>(factory.make(), &goals[i]);
+        return std::make_unique<GoalLog>(source(), &goals[i]);
       });
       INFO(name << (mode == LoopMode::classic ? " classic" : " periodic"));
       CHECK(out.converged);
@@ -156,7 +157,8 @@ struct Generators final : CoverageObserver {
 TEST_CASE("decentralized robots hear their neighbours before their first Lloyd step",
           "[liveness]") {
   Scenario s = paper("u_shape.json");
-  s.coverage.network.channel.loss = std::make_shared<const BernoulliLoss>(0.0);  // decentralized, nothing lost
+  s.coverage.network.channel.loss =
+      std::make_shared<const BernoulliLoss>(0.0);  // decentralized, nothing lost
   Generators g;
   const auto out = run_coverage(s, &g);
   CHECK(out.decentralized);
@@ -185,7 +187,8 @@ TEST_CASE("decentralized robots hear their neighbours before their first Lloyd s
 
 TEST_CASE("a robot that hears nobody starts alone after the acquisition deadline", "[liveness]") {
   Scenario s = paper("u_shape.json");
-  s.coverage.network.channel.loss = std::make_shared<const BernoulliLoss>(1.0);  // every message lost
+  s.coverage.network.channel.loss =
+      std::make_shared<const BernoulliLoss>(1.0);  // every message lost
   s.coverage.network.acquire_timeout = SimTime::from_seconds(2.0);
   s.coverage.max_time = SimTime::from_seconds(5.0);
   Generators g;

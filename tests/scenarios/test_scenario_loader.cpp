@@ -133,8 +133,9 @@ TEST_CASE("planners and controllers with their parameters", "[scenario]") {
                "controller": {"type": "geodesic_lloyd", "resolution": 0.05, "gain": 0.5}})");
   const Scenario s = load_scenario(f);
   CHECK(s.coverage.planner.type == "potential_field");
-  CHECK(s.coverage.planner.influence == 0.3);
-  CHECK(s.coverage.planner.stall_window == std::size_t{7});
+  CHECK(s.coverage.planner.params.number("influence") == 0.3);
+  CHECK(s.coverage.planner.params.integer("stall_window") == 7u);
+  CHECK(s.coverage.planner.params.number("repulsive_gain") == 1.0);  // its default
   CHECK(s.coverage.controller.kind == ControllerKind::geodesic_lloyd);
   CHECK(s.coverage.controller.resolution == 0.05);
   CHECK(s.coverage.controller.gain == 0.5);
@@ -146,16 +147,40 @@ TEST_CASE("planners and controllers with their parameters", "[scenario]") {
   expect_error("{" + kSquare + ", " + d + R"(, "planner": {"type": "rrt"}})",
                "$.planner.type: expected one of");
   expect_error("{" + kSquare + ", " + d + R"(, "planner": {"type": "tangent_bug", "range": 1}})",
-               "$.planner.range: unknown key");
+               "$.planner.range: unknown key \"range\" for planner \"tangent_bug\"");
+  // A parameter of another planner type is refused with where it belongs...
+  expect_error(
+      "{" + kSquare + ", " + d + R"(, "planner": {"type": "tangent_bug", "resolution": 0.1}})",
+      "$.planner.resolution: \"resolution\" is not a parameter of planner \"tangent_bug\" (it "
+      "is one of grid_astar");
+  // ... and accepted in that type's own section, checked there, for a sweep over types.
+  const Scenario sections = load_scenario(
+      write("sections.json",
+            "{" + kSquare + ", " + d +
+                R"(, "planner": {"type": "tangent_bug", "grid_astar": {"resolution": 0.1},
+                              "potential_field": {"influence": 0.2}}})"));
+  CHECK(sections.coverage.planner.type == "tangent_bug");
+  const Scenario picked = load_scenario(
+      write("picked.json",
+            "{" + kSquare + ", " + d +
+                R"(, "planner": {"type": "grid_astar", "grid_astar": {"resolution": 0.1}}})"));
+  CHECK(picked.coverage.planner.params.number("resolution") == 0.1);
+  expect_error("{" + kSquare + ", " + d +
+                   R"(, "planner": {"type": "tangent_bug", "grid_astar": {"resolution": -1}}})",
+               "$.planner.grid_astar.resolution: expected a number > 0");
+  expect_error("{" + kSquare + ", " + d +
+                   R"(, "planner": {"type": "grid_astar", "resolution": 0.1,
+                      "grid_astar": {"resolution": 0.2}}})",
+               "$.planner.grid_astar.resolution: \"resolution\" is set twice");
   expect_error(
       "{" + kSquare + ", " + d + R"(, "planner": {"type": "grid_astar", "resolution": 0}})",
-      "$.planner.resolution: expected a positive number");
+      "$.planner.resolution: expected a number > 0, found 0");
   expect_error(
       "{" + kSquare + ", " + d + R"(, "planner": {"type": "grid_astar", "resolution": 1e-6}})",
       "$.planner.resolution: resolution too fine");
   expect_error(
       "{" + kSquare + ", " + d + R"(, "planner": {"type": "potential_field", "stall_window": 0}})",
-      "$.planner.stall_window: expected a whole number");
+      "$.planner.stall_window: expected a whole number >= 1");
   expect_error("{" + kSquare + ", " + d + R"(, "controller": {"type": "voronoi"}})",
                "$.controller.type: expected one of");
   expect_error("{" + kSquare + ", " + d + R"(, "controller": {"type": "euclidean_lloyd", "k": 1}})",

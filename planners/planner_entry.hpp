@@ -1,0 +1,41 @@
+#pragma once
+// What a planner is to the rest of covsim: a registry entry (planner_registry()) with its
+// name, description, parameter schema and factory. A factory is called once per run and
+// returns a source that builds each robot's planner, so that what a planner type builds
+// once (a visibility graph, an occupancy grid) is shared by the run's robots.
+#include <functional>
+#include <memory>
+
+#include "core/geometry/environment.hpp"
+#include "core/registry.hpp"
+#include "planners/planner.hpp"
+
+namespace covsim {
+
+// What a planner should know about its sensor to set its thresholds.
+struct SensorSpec {
+  double noise_sigma = 0.0;  // metres of Gaussian range noise
+};
+
+struct PlannerContext {
+  const Environment& environment;
+  SensorSpec sensor;
+};
+
+// Builds one robot's planner.
+using PlannerSource = std::function<std::unique_ptr<Planner>()>;
+
+struct PlannerEntry : ComponentInfo {
+  std::function<PlannerSource(const PlannerContext&, const Params&)> make;
+  // Optional: checks that need the environment (a grid too fine for it, say), run when a
+  // scenario is loaded rather than when its run starts; throw ParamError.
+  std::function<void(const Environment&, const Params&)> check;
+};
+
+// A scenario's "planner": the type, and its parameters validated against its schema.
+struct PlannerConfig {
+  std::string type = "tangent_bug";
+  Params params;
+};
+
+}  // namespace covsim
