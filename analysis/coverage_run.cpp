@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "analysis/timed_planner.hpp"
 #include "core/trace.hpp"
+#include "planners/planner_registry.hpp"
 #include "scenarios/scenario_error.hpp"
 
 namespace covsim {
@@ -15,11 +17,11 @@ class CostSampler final : public CoverageObserver {
   void on_motion(SimTime t, const Robot& r) override {
     if (next_ != nullptr) next_->on_motion(t, r);
   }
-  void on_sample(SimTime t, CoverageController& c) override {
+  void on_sample(SimTime t, const CoverageController& c) override {
     series.emplace_back(t.seconds(), c.real_partition().cost());
     if (next_ != nullptr) next_->on_sample(t, c);
   }
-  void on_finish(SimTime t, CoverageController& c) override {
+  void on_finish(SimTime t, const CoverageController& c) override {
     if (series.empty() || series.back().first < t.seconds())
       series.emplace_back(t.seconds(), c.real_partition().cost());
     if (next_ != nullptr) next_->on_finish(t, c);
@@ -51,8 +53,20 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
                         ": $: missing required key \"seed\" (a run needs a seed)");
   Kernel kernel(*scenario.seed);
   if (trace != nullptr) kernel.attach_trace(trace);
+  // Every planner is wrapped to time its steps (wall clock, outside the simulation).
+  PlannerTotals planner_totals;
+  const PlannerSource source =
+      make_planner
+          ? PlannerSource{}
+          : planner_source(scenario.coverage.planner,
+                           PlannerContext{*scenario.environment,
+                                          SensorSpec{scenario.coverage.sensor.noise_sigma}});
   CoverageController controller(kernel, *scenario.environment, *scenario.density,
-                                scenario.robot_positions, scenario.coverage, make_planner);
+                                scenario.robot_positions, scenario.coverage,
+                                [&](std::uint32_t i) -> std::unique_ptr<Planner> {
+                                  return std::make_unique<TimedPlanner>(
+                                      make_planner ? make_planner(i) : source(), planner_totals);
+                                });
   CostSampler sampler(observer);
   controller.set_observer(&sampler);
   controller.start();
@@ -96,8 +110,8 @@ CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observe
     out.centroid_distance_mean += r.centroid_distance / static_cast<double>(out.robots.size());
     out.centroid_distance_max = std::max(out.centroid_distance_max, r.centroid_distance);
   }
-  out.planner_seconds = controller.planner_totals().seconds;
-  out.planner_steps = controller.planner_totals().steps;
+  out.planner_seconds = planner_totals.seconds;
+  out.planner_steps = planner_totals.steps;
   return out;
 }
 

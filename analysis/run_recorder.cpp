@@ -32,7 +32,8 @@ void RunRecorder::on_motion(SimTime t, const Robot& r) {
   flush(false);
 }
 
-void RunRecorder::on_sample(SimTime t, CoverageController& controller) {
+void RunRecorder::on_sample(SimTime t, const CoverageController& controller) {
+  if (!network_) network_ = std::make_unique<NetworkMetrics>(controller.environment());
   MetricsSample s{t.seconds(), 0, 0, 0, 0, 0, 0, {}, {}};
   const VoronoiPartition& vp = controller.virtual_partition();
   s.cost_virtual = vp.cost();
@@ -44,7 +45,7 @@ void RunRecorder::on_sample(SimTime t, CoverageController& controller) {
     s.path_length += r.path_length;
   }
   s.messages = controller.network_totals();
-  s.network = controller.network_sample();
+  s.network = network_->sample(controller);
   const NetworkSample& n = s.network;
   fmt::format_to(std::back_inserter(metrics_buffer_),
                  "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.t, s.cost_real,
@@ -57,7 +58,7 @@ void RunRecorder::on_sample(SimTime t, CoverageController& controller) {
   flush(false);
 }
 
-void RunRecorder::on_finish(SimTime t, CoverageController& c) {
+void RunRecorder::on_finish(SimTime t, const CoverageController& c) {
   if (samples_.empty() || samples_.back().t < t.seconds()) on_sample(t, c);
 }
 

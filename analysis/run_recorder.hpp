@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+
+#include "analysis/network_metrics.hpp"
 #include "core/atomic_file.hpp"
 #include "robot/coverage_controller.hpp"
 
@@ -25,9 +28,9 @@ class RunRecorder final : public CoverageObserver {
  public:
   RunRecorder(const std::filesystem::path& dir, const std::vector<Vec2>& starts);
   void on_motion(SimTime t, const Robot& r) override;
-  void on_sample(SimTime t, CoverageController& c) override;
+  void on_sample(SimTime t, const CoverageController& c) override;
   // A last sample at the end of the run.
-  void on_finish(SimTime t, CoverageController& c) override;
+  void on_finish(SimTime t, const CoverageController& c) override;
   // Moves both files into place.
   void commit();
 
@@ -41,6 +44,7 @@ class RunRecorder final : public CoverageObserver {
   std::string trajectory_buffer_, metrics_buffer_;
   std::vector<std::vector<Vec2>> real_, virtual_;
   std::vector<MetricsSample> samples_;
+  std::unique_ptr<NetworkMetrics> network_;  // built at the first sample
 };
 
 }  // namespace covsim

@@ -26,7 +26,7 @@ struct Episode {
 void BM_PlannerStep(benchmark::State& state, const char* planner) {
   const Scenario s = load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/office.json");
   const Environment& env = *s.environment;
-  const double range = s.coverage.sensor_range;
+  const double range = s.coverage.sensor.range;
   const double step = s.coverage.max_speed * s.coverage.loop2_period.seconds();
   PlannerConfig config;
   config.type = planner;

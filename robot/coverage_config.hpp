@@ -8,6 +8,8 @@
 #include "core/sim_time.hpp"
 #include "net/channel.hpp"
 #include "planners/planner_entry.hpp"
+#include "robot/coverage_law.hpp"
+#include "robot/sensor_model.hpp"
 
 namespace covsim {
 
@@ -35,38 +37,13 @@ struct NetworkConfig {
   }
 };
 
-// Which targets loop 1 hands the planners.
-enum class ControllerKind {
-  virtual_generators,  // the paper's: Lloyd on virtual generators, targets projected onto Ω
-  euclidean_lloyd,     // Lloyd on the real positions; each robot drives at its centroid
-  geodesic_lloyd,      // cells and gradient step under the geodesic distance in Ω
-};
-std::string_view to_string(ControllerKind k);
-
-struct ControllerConfig {
-  ControllerKind kind = ControllerKind::virtual_generators;
-  // geodesic_lloyd: the spacing of the integration lattice (unset: 1/100 of the diameter of
-  // Ω's bounding box).
-  std::optional<double> resolution;
-  // geodesic_lloyd: the step toward the geodesic Lloyd point T, target = p + gain (T - p).
-  // Under the geodesic distance a full step (gain 1) overshoots near obstacles' corners,
-  // where the directions to the points behind them turn quickly, and can oscillate forever.
-  double gain = 0.25;
-};
-
 struct CoverageConfig {
-  ControllerConfig controller;
+  LawConfig law;  // the scenario's "controller": which targets loop 1 hands the planners
   LoopMode mode = LoopMode::classic;
   SimTime loop2_period = SimTime::from_ns(100'000'000);    // 0.1 s: one motion step
   SimTime loop1_period = SimTime::from_ns(1'000'000'000);  // periodic mode only
   double max_speed = 0.1;                                  // m/s
-  double sensor_range = INFINITY;                          // 0, finite or infinite
-  // The range sensor is read every sensor_period (unset: at every loop-2 step); a reading
-  // is lost with probability sensor_dropout (the planner keeps the last one) and its ranges
-  // carry Gaussian noise of sensor_noise_sigma metres. Contact sensing is always current.
-  std::optional<SimTime> sensor_period;
-  double sensor_noise_sigma = 0.0;
-  double sensor_dropout = 0.0;
+  SensorConfig sensor;
   PlannerConfig planner;
   // Convergence: every robot settled at its real target (within position_tolerance) and
   // every virtual generator within virtual_tolerance of its virtual target. Unset: 1e-3

@@ -12,7 +12,7 @@ struct Robot {
   std::uint32_t id = 0;
   Vec2 position;           // g_real
   Vec2 virtual_generator;  // g_virt
-  Vec2 virtual_target;     // t_virt: the centroid of its cell at the last loop-1 update
+  Vec2 virtual_target;     // t_virt: the target loop 1 last set
   Vec2 real_target;        // t_real: t_virt, or its projection onto Ω
   bool projected = false;  // t_virt lies outside Ω (an obstacle boundary Voronoi region)
   bool stable = false;     // the last loop 1 left it where it was: nothing to do
@@ -25,8 +25,6 @@ struct Robot {
   PlanStatus status = PlanStatus::reached;
   double path_length = 0.0;
   std::unique_ptr<Planner> planner;
-  SensorReading reading;  // the latest range reading
-  bool has_reading = false;
 };
 
 }  // namespace covsim

@@ -8,6 +8,7 @@
 #include "net/delay_registry.hpp"
 #include "net/loss_registry.hpp"
 #include "planners/planner_registry.hpp"
+#include "robot/coverage_law_registry.hpp"
 #include "scenarios/component_reader.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
@@ -108,32 +109,21 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     c.planner = PlannerConfig{choice.type, choice.params};
   }
   if (auto k = root.find("controller")) {
-    ControllerConfig& cc = c.controller;
-    const std::string type =
-        k->at("type").one_of({"virtual_generators", "euclidean_lloyd", "geodesic_lloyd"});
-    cc.kind = type == "euclidean_lloyd"  ? ControllerKind::euclidean_lloyd
-              : type == "geodesic_lloyd" ? ControllerKind::geodesic_lloyd
-                                         : ControllerKind::virtual_generators;
-    // geodesic_lloyd's parameters are accepted with any type, as for planners.
-    k->only_keys({"type", "resolution", "gain"});
-    if (auto v = k->find("resolution")) cc.resolution = v->positive();
-    if (auto v = k->find("gain")) {
-      cc.gain = v->positive();
-      if (cc.gain > 1.0) v->fail("expected a gain in (0, 1]");
-    }
+    const ComponentChoice choice = read_component(*k, coverage_law_registry(), "type");
+    c.law = LawConfig{choice.type, choice.params};
   }
   if (auto s = root.find("sensor")) {
     s->only_keys({"range", "period", "noise", "dropout"});
     if (auto range = s->find("range"))
-      c.sensor_range = range->is_null() ? INFINITY : range->non_negative();
+      c.sensor.range = range->is_null() ? INFINITY : range->non_negative();
     if (auto p = s->find("period")) {
-      if (!p->is_null()) c.sensor_period = read_period(*p);
+      if (!p->is_null()) c.sensor.period = read_period(*p);
     }
     if (auto n = s->find("noise")) {
       n->only_keys({"sigma"});
-      c.sensor_noise_sigma = n->at("sigma").non_negative();
+      c.sensor.noise_sigma = n->at("sigma").non_negative();
     }
-    if (auto d = s->find("dropout")) c.sensor_dropout = d->probability();
+    if (auto d = s->find("dropout")) c.sensor.dropout = d->probability();
   }
   if (auto l = root.find("loops")) {
     l->only_keys({"mode", "loop1_period", "loop2_period"});
@@ -194,23 +184,19 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment);
   if (auto seed = root.find("seed")) s.seed = seed->unsigned_integer();
   read_coverage(root, s.coverage);
-  // Grids finer than the planners accept would fail at the start of a run: say so here.
-  const Vec2 size = s.environment->bounds().size();
-  const auto check_cells = [&](const std::optional<double>& h, const char* object, double limit) {
-    if (h && std::ceil(size.x / *h) * std::ceil(size.y / *h) > limit) {
-      root.at(object)
-          .at("resolution")
-          .fail(fmt::format("resolution too fine for this environment: more than {} cells", limit));
+  // Checks that need the environment (grids too fine for it) fail here, not at a run's start.
+  const auto check = [&](const auto& entry, const Params& params, const char* key) {
+    if (!entry.check) return;
+    try {
+      entry.check(*s.environment, params);
+    } catch (const ParamError& e) {
+      fail_param(root.at(key), e);
     }
   };
-  if (const auto& check = planner_registry().at(s.coverage.planner.type).check) {
-    try {
-      check(*s.environment, s.coverage.planner.params);
-    } catch (const ParamError& e) {
-      fail_param(root.at("planner"), e);
-    }
-  }
-  check_cells(s.coverage.controller.resolution, "controller", double(1 << 22));
+  if (root.find("planner"))
+    check(planner_registry().at(s.coverage.planner.type), s.coverage.planner.params, "planner");
+  if (root.find("controller"))
+    check(coverage_law_registry().at(s.coverage.law.type), s.coverage.law.params, "controller");
   return s;
 }
 

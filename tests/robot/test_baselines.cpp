@@ -2,15 +2,25 @@
 
 #include <cmath>
 
-#include "net/bernoulli_loss.hpp"
 #include "analysis/coverage_run.hpp"
 #include "core/geometry/visibility_graph.hpp"
+#include "net/bernoulli_loss.hpp"
 #include "scenarios/scenario.hpp"
 #include "tests/robot/paper_scenarios.hpp"
 
 using namespace covsim;
 using covsim::test::MotionChecker;
 using covsim::test::paper;
+
+namespace {
+// A coverage law by name; geodesic_lloyd with the given lattice spacing.
+LawConfig law(const std::string& type, std::optional<double> resolution = std::nullopt) {
+  LawConfig c;
+  c.type = type;
+  if (type == "geodesic_lloyd" && resolution) c.params.set("resolution", *resolution);
+  return c;
+}
+}  // namespace
 
 namespace {
 
@@ -39,8 +49,7 @@ double geodesic_cost(const VisibilityGraph& g, Vec2 p, double h) {
 
 TEST_CASE("geodesic Lloyd settles at the compromise point of Fig. 2b", "[baseline]") {
   Scenario s = paper("fig2b.json");
-  s.coverage.controller.kind = ControllerKind::geodesic_lloyd;
-  s.coverage.controller.resolution = 0.005;
+  s.coverage.law = law("geodesic_lloyd", 0.005);
   s.coverage.position_tolerance = 1e-4;
   s.coverage.planner.type = "visibility_graph";
   const CoverageOutcome out = run(s);
@@ -66,7 +75,7 @@ TEST_CASE("geodesic Lloyd settles at the compromise point of Fig. 2b", "[baselin
 
 TEST_CASE("Lloyd on real positions with straight-line motion gets stuck on Fig. 2c", "[baseline]") {
   Scenario s = paper("fig2c.json");
-  s.coverage.controller.kind = ControllerKind::euclidean_lloyd;
+  s.coverage.law = law("euclidean_lloyd");
   s.coverage.planner.type = "straight_line";
   const CoverageOutcome stuck = run(s);
   CHECK_FALSE(stuck.converged);
@@ -107,7 +116,7 @@ TEST_CASE("a planner that stalls short of a target outside Ω is sent to its pro
 TEST_CASE("Euclidean Lloyd with an exact planner ends at the centroids", "[baseline]") {
   for (const char* planner : {"visibility_graph", "grid_astar", "tangent_bug"}) {
     Scenario s = paper("l_shape.json");
-    s.coverage.controller.kind = ControllerKind::euclidean_lloyd;
+    s.coverage.law = law("euclidean_lloyd");
     s.coverage.planner.type = planner;
     const CoverageOutcome out = run(s);
     INFO(planner);
@@ -120,16 +129,14 @@ TEST_CASE("Euclidean Lloyd with an exact planner ends at the centroids", "[basel
 TEST_CASE("every planner and controller runs the paper's scenarios inside Ω and ends",
           "[baseline]") {
   for (const char* name : {"l_shape.json", "two_obstacles.json", "fig2d.json"}) {
-    for (ControllerKind k : {ControllerKind::virtual_generators, ControllerKind::euclidean_lloyd,
-                             ControllerKind::geodesic_lloyd}) {
+    for (const char* k : {"virtual_generators", "euclidean_lloyd", "geodesic_lloyd"}) {
       for (const char* planner :
            {"tangent_bug", "potential_field", "grid_astar", "visibility_graph", "straight_line"}) {
         Scenario s = paper(name);
-        s.coverage.controller.kind = k;
+        s.coverage.law = law(k, s.environment->diameter() / 40.0);
         s.coverage.planner.type = planner;
         s.coverage.max_time = SimTime::from_seconds(30.0);
-        s.coverage.controller.resolution = s.environment->diameter() / 40.0;
-        INFO(name << " " << to_string(k) << " " << planner);
+        INFO(name << " " << k << " " << planner);
         const CoverageOutcome out = run(s);
         CHECK((out.stop_reason == "converged" || out.stop_reason == "stuck" ||
                out.stop_reason == "max_time"));
@@ -141,12 +148,11 @@ TEST_CASE("every planner and controller runs the paper's scenarios inside Ω and
 }
 
 TEST_CASE("the baselines run decentralized, from what each robot hears", "[baseline]") {
-  for (ControllerKind k : {ControllerKind::euclidean_lloyd, ControllerKind::geodesic_lloyd}) {
+  for (const char* k : {"euclidean_lloyd", "geodesic_lloyd"}) {
     Scenario s = paper("u_shape.json");
-    s.coverage.controller.kind = k;
-    s.coverage.controller.resolution = s.environment->diameter() / 50.0;
+    s.coverage.law = law(k, s.environment->diameter() / 50.0);
     s.coverage.network.channel.loss = std::make_shared<const BernoulliLoss>(0.3);
-    INFO(to_string(k));
+    INFO(k);
     const CoverageOutcome out = run(s);
     CHECK(out.decentralized);
     CHECK(out.network.lost > 0);

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <map>
 
-#include "core/geometry/uniform_density.hpp"
 #include "analysis/coverage_run.hpp"
 #include "core/fingerprint.hpp"
+#include "core/geometry/uniform_density.hpp"
 #include "scenarios/scenario.hpp"
 #include "tests/robot/paper_scenarios.hpp"
 
@@ -145,7 +145,7 @@ TEST_CASE("in a convex room the method is plain Lloyd", "[coverage]") {
 TEST_CASE("TangentBug with finite and zero sensing range also covers the U", "[coverage]") {
   for (double range : {0.2, 0.0}) {
     Scenario s = paper("u_shape.json");
-    s.coverage.sensor_range = range;
+    s.coverage.sensor.range = range;
     INFO("range " << range);
     check_run(s);
   }

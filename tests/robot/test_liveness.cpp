@@ -146,7 +146,7 @@ TEST_CASE("a planner that declares a goal in Ω unreachable stops the run as a p
 
 namespace {
 // Records every robot's virtual generator and virtual target at each motion step.
-struct Generators final : CoverageObserver {
+struct GeneratorLog final : CoverageObserver {
   std::map<std::int64_t, std::map<std::uint32_t, std::pair<Vec2, Vec2>>> at;
   void on_motion(SimTime t, const Robot& r) override {
     at[t.ns()][r.id] = {r.virtual_generator, r.virtual_target};
@@ -159,7 +159,7 @@ TEST_CASE("decentralized robots hear their neighbours before their first Lloyd s
   Scenario s = paper("u_shape.json");
   s.coverage.network.channel.loss =
       std::make_shared<const BernoulliLoss>(0.0);  // decentralized, nothing lost
-  Generators g;
+  GeneratorLog g;
   const auto out = run_coverage(s, &g);
   CHECK(out.decentralized);
   CHECK(out.converged);
@@ -191,7 +191,7 @@ TEST_CASE("a robot that hears nobody starts alone after the acquisition deadline
       std::make_shared<const BernoulliLoss>(1.0);  // every message lost
   s.coverage.network.acquire_timeout = SimTime::from_seconds(2.0);
   s.coverage.max_time = SimTime::from_seconds(5.0);
-  Generators g;
+  GeneratorLog g;
   run_coverage(s, &g);
   for (const auto& [t, robots] : g.at) {
     for (const auto& [robot, state] : robots) {

@@ -1,7 +1,8 @@
 #include <catch2/catch.hpp>
 
-#include "core/geometry/uniform_density.hpp"
 #include "analysis/coverage_run.hpp"
+#include "analysis/network_metrics.hpp"
+#include "core/geometry/uniform_density.hpp"
 #include "scenarios/scenario.hpp"
 #include "tests/robot/paper_scenarios.hpp"
 
@@ -87,8 +88,10 @@ TEST_CASE("a short range and walls split the communication graph", "[network]") 
   struct Graphs final : CoverageObserver {
     std::size_t max_components = 0;
     double max_age = 0.0;
-    void on_sample(SimTime, CoverageController& c) override {
-      const NetworkSample n = c.network_sample();
+    std::unique_ptr<NetworkMetrics> metrics;
+    void on_sample(SimTime, const CoverageController& c) override {
+      if (!metrics) metrics = std::make_unique<NetworkMetrics>(c.environment());
+      const NetworkSample n = metrics->sample(c);
       max_components = std::max(max_components, n.graph.components);
       max_age = std::max(max_age, n.info_age_max);
     }
@@ -105,7 +108,7 @@ TEST_CASE("sampled, noisy and lossy range sensing still covers the U", "[sensing
   j["sensor"] = {{"range", 0.1}, {"period", 0.3}, {"noise", {{"sigma", 0.002}}}, {"dropout", 0.3}};
   const Scenario s = parse_scenario(j, "u_shape with a poor sensor",
                                     std::string(COVSIM_SOURCE_DIR) + "/scenarios");
-  CHECK(s.coverage.sensor_period == SimTime::from_seconds(0.3));
+  CHECK(s.coverage.sensor.period == SimTime::from_seconds(0.3));
   struct Inside final : CoverageObserver {
     const Environment* env;
     std::size_t outside = 0;

@@ -136,9 +136,9 @@ TEST_CASE("planners and controllers with their parameters", "[scenario]") {
   CHECK(s.coverage.planner.params.number("influence") == 0.3);
   CHECK(s.coverage.planner.params.integer("stall_window") == 7u);
   CHECK(s.coverage.planner.params.number("repulsive_gain") == 1.0);  // its default
-  CHECK(s.coverage.controller.kind == ControllerKind::geodesic_lloyd);
-  CHECK(s.coverage.controller.resolution == 0.05);
-  CHECK(s.coverage.controller.gain == 0.5);
+  CHECK(s.coverage.law.type == "geodesic_lloyd");
+  CHECK(s.coverage.law.params.number("resolution") == 0.05);
+  CHECK(s.coverage.law.params.number("gain") == 0.5);
   for (const char* type : {"tangent_bug", "grid_astar", "visibility_graph", "straight_line"}) {
     const fs::path g = write(
         "planner.json", "{" + kSquare + ", " + d + R"(, "planner": {"type": ")" + type + R"("}})");
@@ -187,7 +187,7 @@ TEST_CASE("planners and controllers with their parameters", "[scenario]") {
                "$.controller.k: unknown key");
   expect_error(
       "{" + kSquare + ", " + d + R"(, "controller": {"type": "geodesic_lloyd", "gain": 2}})",
-      "$.controller.gain: expected a gain in (0, 1]");
+      "$.controller.gain: expected a number > 0 and <= 1, found 2");
   expect_error("{" + kSquare + ", " + d + R"(, "controller": {"resolution": 0.1}})",
                "$.controller: missing required key \"type\"");
 }

@@ -1,0 +1,29 @@
+#include "robot/coverage_law.hpp"
+
+#include "robot/generator_state.hpp"
+
+namespace covsim {
+
+bool CoverageLaw::at_rest(const Robot&, const Tolerances&) const {
+  return true;
+}
+
+const VoronoiPartition* Knowledge::partition() const {
+  return shared != nullptr ? &shared->partition(kind) : nullptr;
+}
+
+CellSummary own_cell_summary(const CellIntegrator& integrator, const Knowledge& k,
+                             ConvexPolygon* cell) {
+  if (const VoronoiPartition* p = k.partition()) {
+    if (cell != nullptr) cell->assign(p->cell(k.self).begin(), p->cell(k.self).end());
+    return p->summary(k.self);
+  }
+  const Vec2 g = k.points[k.self];
+  ConvexPolygon local;
+  voronoi_cell(integrator, k.points, k.self, local);
+  const CellSummary s = summarize(integrator.integrate(local, g), g);
+  if (cell != nullptr) *cell = std::move(local);
+  return s;
+}
+
+}  // namespace covsim

@@ -1,0 +1,84 @@
+#pragma once
+// A coverage law: loop 1 of the coverage controller, "what robot i knows" in, its next
+// (virtual) target out. An extension point: a law is this interface plus one entry in
+// coverage_law_registry(). The paper's law runs Lloyd on virtual generators that move as if
+// Ω were convex; the baselines run Lloyd (Euclidean or geodesic) on the real positions.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/geometry/cell_integrator.hpp"
+#include "core/geometry/voronoi_partition.hpp"
+#include "core/registry.hpp"
+#include "robot/robot.hpp"
+
+namespace covsim {
+
+class GeneratorState;
+
+// Which generators a law computes cells of.
+enum class Generators {
+  virtual_generators,  // the paper's: each robot's virtual generator
+  positions,           // the robots' real positions
+};
+
+// What robot i knows when it runs loop 1: the generators of the robots it has heard of (all
+// of them with the ideal network), in robot-id order, its own at `self`.
+struct Knowledge {
+  const std::vector<Vec2>& points;
+  std::size_t self;
+  Generators kind;
+  // When the robot knows every generator as it is now (the ideal network): their shared
+  // state, whose partition is computed once per change for every robot and the metrics,
+  // and whose version changes whenever a generator moves (for a law's own caches).
+  const GeneratorState* shared = nullptr;
+  std::optional<std::uint64_t> version;
+  // The shared partition, if there is one (computed on first use).
+  const VoronoiPartition* partition() const;
+};
+
+struct Tolerances {
+  double position;           // a robot is at its target
+  double virtual_generator;  // a virtual generator is at its target
+};
+
+class CoverageLaw {
+ public:
+  virtual ~CoverageLaw() = default;
+  virtual Generators generators() const = 0;
+  // Whether virtual generators step toward the virtual targets as if Ω were convex
+  // (Algorithm 2, line 6); otherwise they follow the positions.
+  virtual bool moves_virtual_generators() const = 0;
+  // Loop 1 for robot i: its new virtual target.
+  virtual Vec2 target(const Robot& robot, const Knowledge& knowledge) = 0;
+  // The law's own part of a robot's convergence test (the controller checks that the robot
+  // has settled at its real target): by default, nothing more.
+  virtual bool at_rest(const Robot& robot, const Tolerances& tolerances) const;
+};
+
+struct LawContext {
+  const Environment& environment;
+  const Density& density;
+  const CellIntegrator& integrator;
+};
+
+struct LawEntry : ComponentInfo {
+  std::function<std::unique_ptr<CoverageLaw>(const LawContext&, const Params&)> make;
+  // Optional: checks that need the environment, run when a scenario is loaded.
+  std::function<void(const Environment&, const Params&)> check;
+};
+
+// A scenario's "controller": the law, and its parameters validated against its schema.
+struct LawConfig {
+  std::string type = "virtual_generators";
+  Params params;
+};
+
+// The centroid of robot i's Voronoi cell among the generators it knows: from the shared
+// partition when there is one, else from its own cell (computed as the partition would).
+CellSummary own_cell_summary(const CellIntegrator& integrator, const Knowledge& k,
+                             ConvexPolygon* cell = nullptr);
+
+}  // namespace covsim

@@ -1,0 +1,100 @@
+#include "robot/networked_view.hpp"
+
+#include "robot/event_classes.hpp"
+
+namespace covsim {
+
+NetworkedView::NetworkedView(Kernel& kernel, const Environment& env, const NetworkConfig& config,
+                             const GeneratorState& state)
+    : kernel_(kernel),
+      config_(config),
+      state_(state),
+      channel_(std::make_unique<Channel>(config.channel, kernel.seed(), env)) {
+  const std::size_t n = state.points(Generators::positions).size();
+  tables_.resize(n);
+  next_seq_.assign(n, 0);
+  acquired_.assign(n, false);
+  broadcast_kind_ = kernel_.add_kind(
+      "broadcast", [this](Kernel& k, const Event& ev) { broadcast(k, ev.entity); });
+  deliver_kind_ = kernel_.add_kind("deliver", [this](Kernel&, const Event& ev) {
+    const auto slot = static_cast<std::uint32_t>(ev.payload);
+    tables_[ev.entity].update(in_flight_[slot]);
+    free_slots_.push_back(slot);
+  });
+}
+
+void NetworkedView::start(SimTime t0) {
+  t0_ = t0;
+  const Period period = Period::from_ns(config_.broadcast_period.ns());
+  for (std::uint32_t i = 0; i < tables_.size(); ++i) {
+    SimTime phase = t0;
+    if (config_.random_phase) {
+      phase += SimTime::from_seconds(
+          kernel_.stream(i, "broadcast-phase").uniform(0.0, period.seconds()));
+    }
+    kernel_.schedule_periodic(period, phase, broadcast_kind_, i, event_class::broadcast);
+  }
+}
+
+bool NetworkedView::ready(std::uint32_t i) {
+  if (acquired_[i]) return true;
+  const SimTime now = kernel_.now();
+  if (now < t0_ + config_.acquire_time()) return false;
+  // Nobody heard yet: wait for a first message, up to the deadline.
+  if (tables_[i].size() == 0 && now < t0_ + config_.acquire_deadline()) return false;
+  acquired_[i] = true;
+  return true;
+}
+
+void NetworkedView::refresh(std::uint32_t i) {
+  if (config_.staleness) tables_[i].drop_stale(kernel_.now(), *config_.staleness);
+}
+
+Knowledge NetworkedView::knowledge(std::uint32_t i, Generators kind) const {
+  const bool positions = kind == Generators::positions;
+  const Vec2 own = state_.points(kind)[i];
+  known_.clear();
+  std::size_t self = 0;
+  bool placed = false;
+  for (const auto& [sender, m] : tables_[i].entries()) {  // by sender id
+    if (!placed && sender > i) {
+      self = known_.size();
+      known_.push_back(own);
+      placed = true;
+    }
+    known_.push_back(positions ? m.position : m.virtual_generator);
+  }
+  if (!placed) {
+    self = known_.size();
+    known_.push_back(own);
+  }
+  return Knowledge{known_, self, kind, nullptr, std::nullopt};
+}
+
+void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {
+  const std::vector<Vec2>& positions = state_.points(Generators::positions);
+  const StateMessage m{i, next_seq_[i]++, k.now(), state_.points(Generators::virtual_generators)[i],
+                       positions[i]};
+  for (std::uint32_t j = 0; j < tables_.size(); ++j) {
+    if (j == i) continue;
+    ++totals_.sent;
+    const Channel::Transmission t = channel_->transmit(i, j, positions[i], positions[j]);
+    if (t.outcome == Channel::Outcome::lost) ++totals_.lost;
+    if (t.outcome == Channel::Outcome::out_of_range || t.outcome == Channel::Outcome::blocked)
+      ++totals_.unreachable;
+    if (t.outcome != Channel::Outcome::delivered) continue;
+    ++totals_.delivered;
+    std::uint32_t slot;
+    if (!free_slots_.empty()) {
+      slot = free_slots_.back();
+      free_slots_.pop_back();
+      in_flight_[slot] = m;
+    } else {
+      slot = static_cast<std::uint32_t>(in_flight_.size());
+      in_flight_.push_back(m);
+    }
+    k.schedule_in(t.delay, deliver_kind_, j, event_class::deliver, slot);
+  }
+}
+
+}  // namespace covsim

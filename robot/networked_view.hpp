@@ -1,0 +1,56 @@
+#pragma once
+// Decentralized operation: every robot broadcasts its state (virtual generator, position, a
+// sequence number, the send time) every broadcast period through the channel (range, line
+// of sight, loss and delay models); delivered messages update the receiver's neighbour
+// table (the newest by sequence number), and a robot knows what its table holds. Events:
+// "broadcast" (class 3) per robot, "deliver" (class 4) per delivered message.
+//
+// Algorithm 1 acquires the neighbours (line 3) before its first Lloyd step: a robot is
+// ready once NetworkConfig::acquire_time() has passed since the start and it has heard
+// somebody, or once acquire_deadline() has passed (it then goes alone, its cell Ω).
+#include <memory>
+#include <vector>
+
+#include "core/kernel.hpp"
+#include "net/channel.hpp"
+#include "net/neighbor_table.hpp"
+#include "robot/coverage_config.hpp"
+#include "robot/generator_state.hpp"
+#include "robot/neighbor_view.hpp"
+
+namespace covsim {
+
+class NetworkedView final : public NeighborView {
+ public:
+  NetworkedView(Kernel& kernel, const Environment& env, const NetworkConfig& config,
+                const GeneratorState& state);
+  bool decentralized() const override { return true; }
+  void start(SimTime t0) override;
+  bool ready(std::uint32_t i) override;
+  void refresh(std::uint32_t i) override;
+  Knowledge knowledge(std::uint32_t i, Generators kind) const override;
+  NetworkTotals totals() const override { return totals_; }
+
+  const Channel& channel() const { return *channel_; }
+  const NetworkConfig& config() const { return config_; }
+  const std::vector<NeighborTable>& tables() const { return tables_; }
+
+ private:
+  void broadcast(Kernel& k, std::uint32_t i);
+
+  Kernel& kernel_;
+  NetworkConfig config_;
+  const GeneratorState& state_;
+  std::unique_ptr<Channel> channel_;
+  EventKind broadcast_kind_ = 0, deliver_kind_ = 0;
+  std::vector<NeighborTable> tables_;
+  std::vector<std::uint64_t> next_seq_;
+  std::vector<StateMessage> in_flight_;  // messages on their way, by slot
+  std::vector<std::uint32_t> free_slots_;
+  std::vector<bool> acquired_;
+  SimTime t0_;
+  NetworkTotals totals_;
+  mutable std::vector<Vec2> known_;  // what knowledge() returns points into
+};
+
+}  // namespace covsim
