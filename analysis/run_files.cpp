@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/result_fields.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario_error.hpp"
 
@@ -44,16 +45,21 @@ void read_csv(const fs::path& file, const std::string& header_prefix, std::size_
   }
 }
 
-Vec2 point(const JsonValue& v) {
-  const std::vector<double> xy = {v[0].number(), v[1].number()};
-  return {xy[0], xy[1]};
-}
-
-PlanStatus status_named(const JsonValue& v) {
-  const std::string s = v.one_of({"moving", "reached", "projected", "stalled"});
-  for (PlanStatus p : {PlanStatus::moving, PlanStatus::reached, PlanStatus::projected})
-    if (to_string(p) == s) return p;
-  return PlanStatus::stalled;
+// Every field of a table from a JSON object, with errors naming the file and JSON path.
+template <class Record>
+void read_fields(const FieldTable<Record>& table, const nlohmann::json& j, const fs::path& file,
+                 Record& out) {
+  for (const auto& f : table) {
+    if (!f.set) continue;
+    const nlohmann::json* v = at_path(j, f.name);
+    if (v == nullptr)
+      throw ScenarioError(fmt::format("{}: $.{}: missing required key", file.string(), f.name));
+    try {
+      f.set(out, *v);
+    } catch (const std::exception& e) {
+      throw ScenarioError(fmt::format("{}: $.{}: {}", file.string(), f.name, e.what()));
+    }
+  }
 }
 
 }  // namespace
@@ -80,32 +86,12 @@ RunFiles read_run_files(const fs::path& dir) {
   RunFiles f;
   const fs::path final_file = dir / "final.json";
   const nlohmann::json fj = read_json_file(final_file);
-  const JsonValue final_json(fj, final_file.string());
-  const std::string source = final_json.at("scenario").string();
+  const std::string source = JsonValue(fj, final_file.string()).at("scenario").string();
   const fs::path scenario_file = dir / "scenario.json";
   f.scenario = parse_scenario(read_json_file(scenario_file), source, dir);
 
   CoverageOutcome& o = f.outcome;
-  o.converged = final_json.at("converged").boolean();
-  o.sim_time = SimTime::from_seconds(final_json.at("sim_time").number());
-  o.stop_reason = final_json.at("stop_reason").string();
-  const JsonValue cost = final_json.at("cost");
-  o.cost_virtual = cost.at("virtual").number();
-  o.cost_real = cost.at("real").number();
-  o.cost_real_in_virtual_partition = cost.at("real_in_virtual_partition").number();
-  const JsonValue robots = final_json.at("robots");
-  for (std::size_t i = 0; i < robots.size(); ++i) {
-    const JsonValue r = robots[i];
-    RobotOutcome ro;
-    ro.position = point(r.at("position"));
-    ro.virtual_generator = point(r.at("virtual_generator"));
-    ro.virtual_target = point(r.at("virtual_target"));
-    ro.real_target = point(r.at("real_target"));
-    ro.projected = r.at("projected").boolean();
-    ro.status = status_named(r.at("status"));
-    ro.path_length = r.at("path_length").number();
-    o.robots.push_back(ro);
-  }
+  read_fields(final_fields(), fj, final_file, o);
   if (o.robots.size() != f.scenario.robot_positions.size()) {
     throw ScenarioError(final_file.string() + ": $.robots: expected as many robots as " +
                         scenario_file.string() + " has");
@@ -121,15 +107,21 @@ RunFiles read_run_files(const fs::path& dir) {
                                          {v[6], v[7]},
                                          {v[8], v[9]}});
   });
-  read_csv(dir / "metrics.csv", "t,cost_real,cost_virtual,cost_real_in_virtual_partition", 4,
-           [&](const std::vector<double>& v) {
-             MetricsSample s{};
-             s.t = v[0];
-             s.cost_real = v[1];
-             s.cost_virtual = v[2];
-             s.cost_real_in_virtual_partition = v[3];
-             f.samples.push_back(s);
-           });
+  // metrics.csv: the columns the figures need, by their names in the header.
+  const fs::path metrics = dir / "metrics.csv";
+  std::vector<const Field<MetricsSample>*> columns;
+  for (const auto& field : metrics_fields()) {
+    if (field.set) columns.push_back(&field);
+  }
+  std::string wanted;
+  for (const auto* c : columns)
+    wanted += (wanted.empty() ? "" : ",") + c->name;
+  read_csv(metrics, wanted, columns.size(), [&](const std::vector<double>& v) {
+    MetricsSample s;
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      columns[k]->set(s, v[k]);
+    f.samples.push_back(s);
+  });
   return f;
 }
 

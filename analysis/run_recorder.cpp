@@ -2,16 +2,14 @@
 
 #include <fmt/format.h>
 
+#include "analysis/result_fields.hpp"
+
 namespace covsim {
 
 RunRecorder::RunRecorder(const std::filesystem::path& dir, const std::vector<Vec2>& starts)
     : trajectory_(dir / "trajectory.csv"), metrics_(dir / "metrics.csv") {
   trajectory_buffer_ = "t,robot,x,y,vx,vy,tx,ty,rx,ry\n";
-  metrics_buffer_ =
-      "t,cost_real,cost_virtual,cost_real_in_virtual_partition,settled,projected,path_length,"
-      "messages_sent,messages_delivered,messages_lost,info_age_mean,info_age_max,"
-      "area_claimed_by_none,area_claimed_by_several,components,largest_component,diameter_hops,"
-      "average_degree,algebraic_connectivity\n";
+  metrics_buffer_ = csv_header(metrics_fields()) + "\n";
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const Vec2 s = starts[i];
     fmt::format_to(std::back_inserter(trajectory_buffer_), "0,{},{},{},{},{},{},{},{},{}\n", i, s.x,
@@ -34,7 +32,8 @@ void RunRecorder::on_motion(SimTime t, const Robot& r) {
 
 void RunRecorder::on_sample(SimTime t, const CoverageController& controller) {
   if (!network_) network_ = std::make_unique<NetworkMetrics>(controller.environment());
-  MetricsSample s{t.seconds(), 0, 0, 0, 0, 0, 0, {}, {}};
+  MetricsSample s;
+  s.t = t.seconds();
   const VoronoiPartition& vp = controller.virtual_partition();
   s.cost_virtual = vp.cost();
   s.cost_real_in_virtual_partition = vp.cost(controller.positions());
@@ -46,14 +45,7 @@ void RunRecorder::on_sample(SimTime t, const CoverageController& controller) {
   }
   s.messages = controller.network_totals();
   s.network = network_->sample(controller);
-  const NetworkSample& n = s.network;
-  fmt::format_to(std::back_inserter(metrics_buffer_),
-                 "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.t, s.cost_real,
-                 s.cost_virtual, s.cost_real_in_virtual_partition, s.settled, s.projected,
-                 s.path_length, s.messages.sent, s.messages.delivered, s.messages.lost,
-                 n.info_age_mean, n.info_age_max, n.area_claimed_by_none, n.area_claimed_by_several,
-                 n.graph.components, n.graph.largest_component, n.graph.diameter,
-                 n.graph.average_degree, n.graph.algebraic_connectivity);
+  metrics_buffer_ += csv_row(metrics_fields(), s) + "\n";
   samples_.push_back(s);
   flush(false);
 }

@@ -9,20 +9,12 @@
 
 #include <memory>
 
+#include "analysis/metrics_sample.hpp"
 #include "analysis/network_metrics.hpp"
 #include "core/atomic_file.hpp"
 #include "robot/coverage_controller.hpp"
 
 namespace covsim {
-
-struct MetricsSample {
-  double t;
-  double cost_real, cost_virtual, cost_real_in_virtual_partition;
-  std::size_t settled, projected;
-  double path_length;
-  NetworkTotals messages;
-  NetworkSample network;
-};
 
 class RunRecorder final : public CoverageObserver {
  public:

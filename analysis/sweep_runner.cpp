@@ -15,6 +15,7 @@
 
 #include "analysis/coverage_run.hpp"
 #include "analysis/line_chart.hpp"
+#include "analysis/result_fields.hpp"
 #include "analysis/statistics.hpp"
 #include "core/atomic_file.hpp"
 #include "core/fingerprint.hpp"
@@ -25,27 +26,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-nlohmann::json to_json(const SweepResult& r) {
-  nlohmann::json j{{"index", r.index},
-                   {"converged", r.converged},
-                   {"sim_time", r.sim_time},
-                   {"cost_virtual", r.cost_virtual},
-                   {"cost_real", r.cost_real},
-                   {"cost_real_in_virtual_partition", r.cost_real_in_virtual_partition},
-                   {"path_length", r.path_length},
-                   {"time_to_10_percent", r.time_to_10_percent},
-                   {"time_to_5_percent", r.time_to_5_percent},
-                   {"time_to_1_percent", r.time_to_1_percent},
-                   {"messages_sent", r.messages_sent},
-                   {"messages_lost", r.messages_lost},
-                   {"events", r.events},
-                   {"stop_reason", r.stop_reason},
-                   {"target_outside_steps", r.target_outside_steps},
-                   {"stalled_time", r.stalled_time},
-                   {"centroid_distance", r.centroid_distance},
-                   {"planner_step_time", r.planner_step_time},
-                   {"wall_time", r.wall_time},
-                   {"fingerprint", r.fingerprint}};
+nlohmann::ordered_json to_json(const SweepResult& r) {
+  nlohmann::ordered_json j{{"index", r.index}};
+  for (const auto& [key, value] : r.values.items())
+    j[key] = value;
   if (r.error) j["error"] = *r.error;
   return j;
 }
@@ -57,26 +41,14 @@ std::optional<SweepResult> from_json(const fs::path& file) {
     const nlohmann::json j = nlohmann::json::parse(in);
     SweepResult r;
     r.index = j.at("index").get<std::size_t>();
-    r.converged = j.at("converged").get<bool>();
-    r.sim_time = j.at("sim_time").get<double>();
-    r.cost_virtual = j.at("cost_virtual").get<double>();
-    r.cost_real = j.at("cost_real").get<double>();
-    r.cost_real_in_virtual_partition = j.at("cost_real_in_virtual_partition").get<double>();
-    r.path_length = j.at("path_length").get<double>();
-    r.time_to_10_percent = j.at("time_to_10_percent").get<double>();
-    r.time_to_5_percent = j.at("time_to_5_percent").get<double>();
-    r.time_to_1_percent = j.at("time_to_1_percent").get<double>();
-    r.messages_sent = j.at("messages_sent").get<std::uint64_t>();
-    r.messages_lost = j.at("messages_lost").get<std::uint64_t>();
-    r.events = j.at("events").get<std::uint64_t>();
-    r.stop_reason = j.at("stop_reason").get<std::string>();
-    r.target_outside_steps = j.at("target_outside_steps").get<double>();
-    r.stalled_time = j.at("stalled_time").get<double>();
-    r.centroid_distance = j.at("centroid_distance").get<double>();
-    r.planner_step_time = j.at("planner_step_time").get<double>();
-    r.wall_time = j.at("wall_time").get<double>();
-    r.fingerprint = j.at("fingerprint").get<std::string>();
     if (j.contains("error")) r.error = j.at("error").get<std::string>();
+    for (const auto& f : run_fields()) {
+      if (j.contains(f.name)) {
+        r.values[f.name] = j.at(f.name);
+      } else if (!r.error) {
+        return std::nullopt;  // a damaged or older result is run again
+      }
+    }
     return r;
   } catch (const std::exception&) {
     return std::nullopt;  // a damaged result is run again
@@ -87,33 +59,22 @@ SweepResult execute(const SweepSpec& spec, const SweepRun& run) {
   SweepResult r;
   r.index = run.index;
   const auto start = std::chrono::steady_clock::now();
+  RunMeasures m;
   try {
     const Scenario s =
         parse_scenario(spec.scenario_for(run), fmt::format("{} (run {})", spec.source, run.index),
                        spec.scenario_dir);
-    const CoverageOutcome o = run_coverage(s);
-    r.converged = o.converged;
-    r.sim_time = o.sim_time.seconds();
-    r.cost_virtual = o.cost_virtual;
-    r.cost_real = o.cost_real;
-    r.cost_real_in_virtual_partition = o.cost_real_in_virtual_partition;
-    r.path_length = o.path_length;
-    r.time_to_10_percent = o.time_to_10_percent;
-    r.time_to_5_percent = o.time_to_5_percent;
-    r.time_to_1_percent = o.time_to_1_percent;
-    r.messages_sent = o.network.sent;
-    r.messages_lost = o.network.lost;
-    r.events = o.events;
-    r.stop_reason = o.stop_reason;
-    r.target_outside_steps = static_cast<double>(o.target_outside_steps);
-    r.stalled_time = o.stalled_time;
-    r.centroid_distance = o.centroid_distance_mean;
-    r.planner_step_time = o.planner_step_time_us();
-    r.fingerprint = Fingerprint::to_hex(o.fingerprint);
+    m.outcome = run_coverage(s);
   } catch (const std::exception& e) {
     r.error = e.what();
   }
-  r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!r.error) {
+    for (const auto& f : run_fields())
+      r.values[f.name] = f.get(m);
+  } else {
+    r.values["wall_time"] = m.wall_time;
+  }
   return r;
 }
 
@@ -123,42 +84,31 @@ std::string csv_value(const nlohmann::json& v) {
   return v.dump();
 }
 
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s)
-    q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
 }  // namespace
 
-const std::vector<std::string>& sweep_metrics() {
-  static const std::vector<std::string> m{"sim_time",          "cost_virtual",
-                                          "cost_real",         "cost_real_in_virtual_partition",
-                                          "path_length",       "time_to_10_percent",
-                                          "time_to_5_percent", "time_to_1_percent",
-                                          "messages_lost",     "target_outside_steps",
-                                          "stalled_time",      "centroid_distance",
-                                          "planner_step_time", "wall_time"};
-  return m;
+double SweepResult::number(const std::string& field) const {
+  const auto it = values.find(field);
+  if (it == values.end()) return NAN;
+  if (it->is_boolean()) return it->get<bool>() ? 1.0 : 0.0;
+  return it->is_number() ? it->get<double>() : NAN;
 }
 
-double metric_value(const SweepResult& r, const std::string& metric) {
-  if (metric == "sim_time") return r.sim_time;
-  if (metric == "cost_virtual") return r.cost_virtual;
-  if (metric == "cost_real") return r.cost_real;
-  if (metric == "cost_real_in_virtual_partition") return r.cost_real_in_virtual_partition;
-  if (metric == "path_length") return r.path_length;
-  if (metric == "time_to_10_percent") return r.time_to_10_percent;
-  if (metric == "time_to_5_percent") return r.time_to_5_percent;
-  if (metric == "time_to_1_percent") return r.time_to_1_percent;
-  if (metric == "messages_lost") return static_cast<double>(r.messages_lost);
-  if (metric == "target_outside_steps") return r.target_outside_steps;
-  if (metric == "stalled_time") return r.stalled_time;
-  if (metric == "centroid_distance") return r.centroid_distance;
-  if (metric == "planner_step_time") return r.planner_step_time;
-  if (metric == "wall_time") return r.wall_time;
-  return NAN;
+bool SweepResult::converged() const {
+  const auto it = values.find("converged");
+  return it != values.end() && it->is_boolean() && it->get<bool>();
+}
+
+std::string SweepResult::fingerprint() const {
+  const auto it = values.find("fingerprint");
+  return it != values.end() && it->is_string() ? it->get<std::string>() : "";
+}
+
+std::vector<std::string> sweep_metrics() {
+  std::vector<std::string> m;
+  for (const auto& f : run_fields()) {
+    if (f.summarized) m.push_back(f.name);
+  }
+  return m;
 }
 
 std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
@@ -301,24 +251,22 @@ void write_runs_csv(const fs::path& file, const SweepSpec& spec,
   AtomicFile f(file);
   std::string out = "run,setting";
   for (const std::string& p : spec.parameters)
-    out += "," + csv_field(p);
-  out +=
-      ",seed,converged,sim_time,cost_virtual,cost_real,cost_real_in_virtual_partition,path_length,"
-      "time_to_10_percent,time_to_5_percent,time_to_1_percent,messages_sent,messages_lost,events,"
-      "stop_reason,target_outside_steps,stalled_time,centroid_distance,planner_step_time,"
-      "wall_time,fingerprint,error\n";
+    out += "," + csv_quote(p);
+  out += ",seed";
+  for (const auto& field : run_fields())
+    out += "," + field.name;
+  out += ",error\n";
   for (const SweepResult& r : results) {
     const SweepRun& run = runs.at(r.index);
     out += fmt::format("{},{}", r.index, run.setting);
     for (const auto& v : run.values)
-      out += "," + csv_field(csv_value(v));
-    out += fmt::format(",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-                       run.seed, r.converged ? 1 : 0, r.sim_time, r.cost_virtual, r.cost_real,
-                       r.cost_real_in_virtual_partition, r.path_length, r.time_to_10_percent,
-                       r.time_to_5_percent, r.time_to_1_percent, r.messages_sent, r.messages_lost,
-                       r.events, r.stop_reason, r.target_outside_steps, r.stalled_time,
-                       r.centroid_distance, r.planner_step_time, r.wall_time, r.fingerprint,
-                       csv_field(r.error.value_or("")));
+      out += "," + csv_quote(csv_value(v));
+    out += fmt::format(",{}", run.seed);
+    for (const auto& field : run_fields()) {
+      const auto it = r.values.find(field.name);
+      out += "," + (it == r.values.end() ? std::string() : csv_cell(*it));
+    }
+    out += "," + csv_quote(r.error.value_or("")) + "\n";
   }
   f.stream() << out;
   f.commit();
@@ -333,7 +281,7 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
   AtomicFile f(file);
   std::string out = "setting";
   for (const std::string& p : spec.parameters)
-    out += "," + csv_field(p);
+    out += "," + csv_quote(p);
   out += ",runs,failed,converged_rate";
   for (const std::string& m : sweep_metrics())
     out += fmt::format(",{0}_mean,{0}_std,{0}_ci95", m);
@@ -341,18 +289,18 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
   for (const auto& [setting, rs] : by_setting) {
     out += fmt::format("{}", setting);
     for (const auto& v : spec.settings[setting])
-      out += "," + csv_field(csv_value(v));
+      out += "," + csv_quote(csv_value(v));
     std::size_t ok = 0, converged = 0;
     for (const SweepResult* r : rs) {
       ok += r->error ? 0 : 1;
-      converged += (!r->error && r->converged) ? 1 : 0;
+      converged += (!r->error && r->converged()) ? 1 : 0;
     }
     out += fmt::format(",{},{},{}", rs.size(), rs.size() - ok,
                        ok > 0 ? static_cast<double>(converged) / ok : 0.0);
     for (const std::string& m : sweep_metrics()) {
       std::vector<double> xs;
       for (const SweepResult* r : rs) {
-        if (!r->error) xs.push_back(metric_value(*r, m));
+        if (!r->error) xs.push_back(r->number(m));
       }
       const SampleSummary s = summarize_sample(xs);
       out += fmt::format(",{},{},{}", s.mean, s.stddev, s.ci95);
@@ -407,7 +355,7 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
                 (label.empty() ? "" : ", ") + spec.parameters[q] + " = " + csv_value(run.values[q]);
         }
         lines[label.empty() ? "mean over seeds" : label][run.values[p].get<double>()].push_back(
-            metric_value(r, metric));
+            r.number(metric));
       }
       std::vector<ChartSeries> series;
       for (const auto& [label, points] : lines) {

@@ -7,25 +7,20 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "analysis/sweep_spec.hpp"
 
 namespace covsim {
 
+// One run's record: its measures (run_fields(), by name), or why it failed.
 struct SweepResult {
   std::size_t index = 0;
   std::optional<std::string> error;  // the run failed: why
-  bool converged = false;
-  double sim_time = 0.0;
-  double cost_virtual = 0.0, cost_real = 0.0, cost_real_in_virtual_partition = 0.0;
-  double path_length = 0.0;
-  double time_to_10_percent = 0.0, time_to_5_percent = 0.0, time_to_1_percent = 0.0;
-  std::uint64_t messages_sent = 0, messages_lost = 0, events = 0;
-  std::string stop_reason;  // converged, stuck or max_time
-  double target_outside_steps = 0.0, stalled_time = 0.0, centroid_distance = 0.0;
-  // Seconds; with planner_step_time (microseconds per planner step), the fields that differ
-  // between machines and runs.
-  double wall_time = 0.0, planner_step_time = 0.0;
-  std::string fingerprint;
+  nlohmann::ordered_json values = nlohmann::ordered_json::object();
+  double number(const std::string& field) const;  // NaN if absent
+  bool converged() const;
+  std::string fingerprint() const;
 };
 
 struct SweepOptions {
@@ -45,9 +40,9 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const std::filesystem:
 std::vector<SweepResult> merge_sweeps(const std::vector<std::filesystem::path>& dirs,
                                       const std::filesystem::path& out, SweepSpec& merged_spec);
 
-// The metrics summarised per setting, in this order, as they appear in summary.csv.
-const std::vector<std::string>& sweep_metrics();
-double metric_value(const SweepResult& r, const std::string& metric);
+// The metrics summarised per setting, in this order, as they appear in summary.csv: the
+// run fields marked summarized.
+std::vector<std::string> sweep_metrics();
 
 void write_runs_csv(const std::filesystem::path& file, const SweepSpec& spec,
                     const std::vector<SweepResult>& results);

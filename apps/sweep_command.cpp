@@ -54,7 +54,7 @@ void add_sweep_command(CLI::App& app) {
     std::size_t failed = 0, converged = 0;
     for (const SweepResult& r : results) {
       failed += r.error ? 1 : 0;
-      converged += (!r.error && r.converged) ? 1 : 0;
+      converged += (!r.error && r.converged()) ? 1 : 0;
     }
     fmt::print("{} runs ({} settings x {} seeds{}): {} converged, {} failed\n", results.size(),
                spec.settings.size(), spec.seeds.size(),
