@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   covsim::app::add_cells_command(app);
   covsim::app::add_kernel_demo_command(app);
+  covsim::app::add_list_command(app);
   covsim::app::add_merge_command(app);
   covsim::app::add_planner_contract_command(app);
   covsim::app::add_plot_command(app);

@@ -15,6 +15,7 @@
 #include "analysis/planner_contract.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "apps/plugin_loader.hpp"
 #include "core/atomic_file.hpp"
 #include "planners/planner_registry.hpp"
 
@@ -28,6 +29,7 @@ struct Options {
   std::uint64_t seed = 1, first = 0, cases = 1000;
   std::optional<std::uint64_t> one;
   std::string out;
+  std::vector<std::string> plugins;
   unsigned jobs = 1;
 };
 
@@ -104,7 +106,9 @@ void add_planner_contract_command(CLI::App& app) {
   cmd->add_option("--jobs", o->jobs, "Worker threads")
       ->check(CLI::Range(1u, 256u))
       ->capture_default_str();
+  add_plugin_option(cmd, o->plugins);
   cmd->callback([o] {
+    load_plugins(o->plugins);
     if (planner_registry().find(o->setup.planner) == nullptr) {
       throw InputError(
           fmt::format("planner-contract: --planner: unknown planner \"{}\" (registered: {})",

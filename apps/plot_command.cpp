@@ -10,6 +10,7 @@
 #include "analysis/replay_html.hpp"
 #include "analysis/run_files.hpp"
 #include "apps/commands.hpp"
+#include "apps/plugin_loader.hpp"
 #include "core/atomic_file.hpp"
 
 namespace covsim::app {
@@ -21,7 +22,10 @@ void add_plot_command(CLI::App& app) {
       "plot", "Redraw a run's scene.svg and cost.svg, and write replay.html to play it back");
   cmd->add_option("DIR", *dir, "Output directory of covsim run")->required();
   cmd->add_option("--frames", *frames, "Most frames in replay.html")->capture_default_str();
-  cmd->callback([dir, frames] {
+  auto plugins = std::make_shared<std::vector<std::string>>();
+  add_plugin_option(cmd, *plugins);
+  cmd->callback([dir, frames, plugins] {
+    load_plugins(*plugins);
     const std::filesystem::path d = *dir;
     const RunFiles run = read_run_files(d);
     AtomicFile scene(d / "scene.svg"), cost(d / "cost.svg"), replay(d / "replay.html");

@@ -7,6 +7,7 @@
 
 #include "analysis/trace_replay.hpp"
 #include "apps/commands.hpp"
+#include "apps/plugin_loader.hpp"
 #include "core/fingerprint.hpp"
 
 namespace covsim::app {
@@ -23,9 +24,12 @@ std::string describe(const std::optional<TraceRecord>& r) {
 
 void add_replay_command(CLI::App& app) {
   auto trace = std::make_shared<std::string>();
+  auto plugins = std::make_shared<std::vector<std::string>>();
   CLI::App* cmd = app.add_subcommand("replay", "Re-run a traced run and compare it event by event");
   cmd->add_option("TRACE", *trace, "Trace written by covsim run --trace")->required();
-  cmd->callback([trace] {
+  add_plugin_option(cmd, *plugins);
+  cmd->callback([trace, plugins] {
+    load_plugins(*plugins);
     const ReplayReport r = replay_trace(*trace);
     if (r.matches) {
       fmt::print("replay matches: {} events, fingerprint {}\n", r.events,

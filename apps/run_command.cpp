@@ -15,6 +15,7 @@
 #include "analysis/trace_replay.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "apps/plugin_loader.hpp"
 #include "core/atomic_file.hpp"
 #include "core/fingerprint.hpp"
 #include "core/trace.hpp"
@@ -42,6 +43,7 @@ void add_run_command(CLI::App& app) {
     std::string scenario;
     std::string out;
     std::string trace;
+    std::vector<std::string> plugins;
   };
   auto opts = std::make_shared<Options>();
   CLI::App* cmd =
@@ -49,7 +51,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("SCENARIO", opts->scenario, "Scenario file")->required();
   cmd->add_option("--out", opts->out, "Output directory (created if missing)")->required();
   cmd->add_option("--trace", opts->trace, "Also write the event trace to this file");
+  add_plugin_option(cmd, opts->plugins);
   cmd->callback([opts] {
+    load_plugins(opts->plugins);
     const Scenario scenario = load_scenario(opts->scenario);
     if (scenario.robot_positions.empty())
       throw ScenarioError(scenario.source + ": $: missing required key \"robots\"");

@@ -11,6 +11,7 @@
 #include "analysis/sweep_runner.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "apps/plugin_loader.hpp"
 
 namespace covsim::app {
 
@@ -21,6 +22,7 @@ void add_sweep_command(CLI::App& app) {
     std::size_t jobs = std::max(1u, std::thread::hardware_concurrency());
     std::string shard = "0/1";
     std::string group;
+    std::vector<std::string> plugins;
   };
   auto opts = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("sweep", "Run a parameter sweep over seeds");
@@ -30,9 +32,11 @@ void add_sweep_command(CLI::App& app) {
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   cmd->add_option("--group", opts->group, "Plot one line per value of this swept parameter");
+  add_plugin_option(cmd, opts->plugins);
   cmd->add_option("--shard", opts->shard, "Run only slice K of N (K in 0..N-1), for clusters")
       ->capture_default_str();
   cmd->callback([opts] {
+    load_plugins(opts->plugins);
     std::size_t k = 0, n = 1;
     if (std::sscanf(opts->shard.c_str(), "%zu/%zu", &k, &n) != 2 || n == 0 || k >= n ||
         opts->shard != fmt::format("{}/{}", k, n)) {

@@ -11,8 +11,12 @@ set(CMAKE_CXX_FLAGS_RELWITHDEBINFO "-O2 -g")
 
 add_library(covsim_flags INTERFACE)
 add_library(covsim::flags ALIAS covsim_flags)
-target_compile_options(covsim_flags INTERFACE -Wall -Wextra -Wpedantic -ffp-contract=off
-                                              -fno-fast-math)
+set_target_properties(covsim_flags PROPERTIES EXPORT_NAME flags)
+target_compile_features(covsim_flags INTERFACE cxx_std_20)
+# Warnings are for covsim's own code: a user building against the installed package gets
+# only what determinism needs.
+target_compile_options(covsim_flags INTERFACE
+  $<BUILD_INTERFACE:-Wall -Wextra -Wpedantic> -ffp-contract=off -fno-fast-math)
 if(COVSIM_SANITIZE)
   target_compile_options(covsim_flags INTERFACE -fsanitize=address,undefined
                                                 -fno-sanitize-recover=all -fno-omit-frame-pointer)

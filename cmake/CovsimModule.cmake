@@ -1,17 +1,19 @@
 # covsim_add_module(NAME SOURCES ... DEPS ...)
-# One library per top-level folder, aliased covsim::NAME. Includes are rooted at the
-# repository, so code says #include "core/kernel.hpp" and the folder names the module.
+# One library per top-level folder, aliased covsim::NAME (exported under the same name).
+# Includes are rooted at the repository (installed: at include/covsim), so code says
+# #include "core/kernel.hpp" and the folder names the module.
 function(covsim_add_module name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
-  if(ARG_SOURCES)
-    add_library(covsim_${name} STATIC ${ARG_SOURCES})
-    target_include_directories(covsim_${name} PUBLIC ${PROJECT_SOURCE_DIR})
-    target_link_libraries(covsim_${name} PUBLIC covsim::flags ${ARG_DEPS})
-  else()
-    # A module with no sources yet still carries its place in the dependency order.
-    add_library(covsim_${name} INTERFACE)
-    target_include_directories(covsim_${name} INTERFACE ${PROJECT_SOURCE_DIR})
-    target_link_libraries(covsim_${name} INTERFACE covsim::flags ${ARG_DEPS})
-  endif()
+  add_library(covsim_${name} STATIC ${ARG_SOURCES})
+  target_include_directories(covsim_${name} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+    $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/generated>
+    $<INSTALL_INTERFACE:include/covsim>)
+  target_link_libraries(covsim_${name} PUBLIC covsim::flags ${ARG_DEPS})
+  set_target_properties(covsim_${name} PROPERTIES EXPORT_NAME ${name}
+                                                  POSITION_INDEPENDENT_CODE ON)
   add_library(covsim::${name} ALIAS covsim_${name})
+  set_property(GLOBAL APPEND PROPERTY COVSIM_MODULES covsim_${name})
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION include/covsim/${name}
+          FILES_MATCHING PATTERN "*.hpp")
 endfunction()

@@ -304,15 +304,15 @@ Params with_defaults(const ParamSchema& schema, Params p) {
 std::string describe(const ParamSchema& schema, const std::string& indent) {
   std::string out;
   for (const ParamSpec& s : schema) {
-    std::string def = s.default_value  ? to_text(*s.default_value)
-                      : !s.default_rule.empty() ? s.default_rule
+    std::string def = s.default_value           ? "default " + to_text(*s.default_value)
+                      : !s.default_rule.empty() ? "default " + s.default_rule
                                                 : "required";
-    if (s.nullable && !s.default_value && s.default_rule.empty()) def = "null";
+    if (s.nullable && !s.default_value && s.default_rule.empty()) def = "default null";
     const std::string bounds = bounds_text(s);
-    out += fmt::format("{}{:<16} {:<8} default {}{}{}{}  {}\n", indent, s.name, to_string(s.kind),
-                       def, s.unit.empty() ? "" : " [" + s.unit + "]",
-                       bounds.empty() ? "" : ", " + bounds,
-                       s.nullable ? ", null allowed" : "", s.description);
+    out +=
+        fmt::format("{}{:<16} {:<8} {}{}{}{}  {}\n", indent, s.name, to_string(s.kind), def,
+                    s.unit.empty() ? "" : " [" + s.unit + "]", bounds.empty() ? "" : ", " + bounds,
+                    s.nullable ? ", null allowed" : "", s.description);
     if (s.kind == ParamKind::choice) {
       out += fmt::format("{}{:<16} {}\n", indent, "", kind_text(s));
     }

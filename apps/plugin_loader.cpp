@@ -1,0 +1,50 @@
+#include "apps/plugin_loader.hpp"
+
+#include <dlfcn.h>
+#include <fmt/format.h>
+
+#include <set>
+
+#include "analysis/plugin.hpp"
+#include "apps/input_error.hpp"
+
+namespace covsim::app {
+
+void add_plugin_option(CLI::App* cmd, std::vector<std::string>& plugins) {
+  cmd->add_option("--plugin", plugins,
+                  "Shared library that registers components (repeatable); see docs/extending.md");
+}
+
+void load_plugins(const std::vector<std::string>& plugins) {
+  static std::set<std::string> loaded;  // a library registers once per process
+  for (const std::string& file : plugins) {
+    if (!loaded.insert(file).second) continue;
+    void* lib = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (lib == nullptr)
+      throw InputError(fmt::format("--plugin {}: cannot load it: {}", file, dlerror()));
+    const auto version = reinterpret_cast<int (*)()>(dlsym(lib, "covsim_plugin_api_version"));
+    const auto built_with =
+        reinterpret_cast<const char* (*)()>(dlsym(lib, "covsim_plugin_covsim_version"));
+    const auto do_register =
+        reinterpret_cast<void (*)(Registries*)>(dlsym(lib, "covsim_plugin_register"));
+    if (version == nullptr || built_with == nullptr || do_register == nullptr) {
+      throw InputError(fmt::format(
+          "--plugin {}: not a covsim plugin (it defines no COVSIM_PLUGIN entry points)", file));
+    }
+    if (version() != kPluginApiVersion) {
+      throw InputError(fmt::format(
+          "--plugin {}: built for covsim plugin API {} (covsim {}); this covsim {} has plugin "
+          "API {}: rebuild the plugin against this covsim",
+          file, version(), built_with(), kVersion, kPluginApiVersion));
+    }
+    Registries r = registries();
+    try {
+      do_register(&r);
+    } catch (const std::exception& e) {
+      throw InputError(
+          fmt::format("--plugin {}: registering its components failed: {}", file, e.what()));
+    }
+  }
+}
+
+}  // namespace covsim::app

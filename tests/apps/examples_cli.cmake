@@ -1,0 +1,79 @@
+# The examples build against an installed covsim, as a user's own project would, and run
+# through both routes: their own program (linking covsim::covsim, registering the component,
+# running the planner contract suite or a sweep) and the installed covsim with --plugin.
+#   -DBUILD=<covsim build dir> -DSOURCE=<covsim source> -DWORK=<scratch> -DCXX=<compiler>
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+set(prefix ${WORK}/prefix)
+
+function(run what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${rc}):\n${out}\n${err}")
+  endif()
+  set(out "${out}" PARENT_SCOPE)
+endfunction()
+
+run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
+foreach(f bin/covsim lib/cmake/covsim/covsimConfig.cmake include/covsim/core/version.hpp
+          include/covsim/analysis/plugin.hpp lib/libcovsim_core.a)
+  if(NOT EXISTS ${prefix}/${f})
+    message(FATAL_ERROR "the installation lacks ${f}")
+  endif()
+endforeach()
+
+set(launcher "")
+find_program(CCACHE ccache)
+if(CCACHE)
+  set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
+endif()
+foreach(example bug2_planner damped_lloyd_law)
+  run("configuring ${example}" ${CMAKE_COMMAND} -S ${SOURCE}/examples/${example}
+      -B ${WORK}/${example} -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX}
+      -DCMAKE_BUILD_TYPE=Release ${launcher})
+  run("building ${example}" ${CMAKE_COMMAND} --build ${WORK}/${example} -j 2)
+endforeach()
+
+# Route 1: the user's own programs.
+run("bug2_demo" ${WORK}/bug2_planner/bug2_demo ${SOURCE}/scenarios/u_shape.json 300)
+if(NOT out MATCHES "contract: 300 cases, [0-9]+ reached, [0-9]+ projected, 0 stalled, 0 failed"
+   OR NOT out MATCHES "run: converged")
+  message(FATAL_ERROR "bug2_demo: ${out}")
+endif()
+run("damped_lloyd_demo" ${WORK}/damped_lloyd_law/damped_lloyd_demo ${SOURCE}/scenarios/u_shape.json
+    ${WORK}/damped-sweep)
+file(READ ${WORK}/damped-sweep/runs.csv runs)
+if(NOT runs MATCHES "0.3,damped_lloyd,1,1," OR NOT runs MATCHES "1.0,damped_lloyd,1,1,")
+  message(FATAL_ERROR "damped_lloyd_demo's sweep did not converge for both gains:\n${runs}")
+endif()
+
+# Route 2: the installed covsim loads the plugins; scenarios select them by name.
+file(READ ${SOURCE}/scenarios/u_shape.json base)
+string(REPLACE "\"seed\": 1" "\"seed\": 1, \"planner\": {\"type\": \"bug2\"}" bug2 "${base}")
+file(WRITE ${WORK}/u_bug2.json "${bug2}")
+string(REPLACE "\"seed\": 1" "\"seed\": 1, \"controller\": {\"type\": \"damped_lloyd\", \"gain\": 0.5}"
+       damped "${base}")
+file(WRITE ${WORK}/u_damped.json "${damped}")
+run("covsim list --plugin" ${prefix}/bin/covsim list planners --names
+    --plugin ${WORK}/bug2_planner/libbug2_plugin.so)
+if(NOT out MATCHES "bug2")
+  message(FATAL_ERROR "covsim list does not show the plugin's planner: ${out}")
+endif()
+foreach(case "bug2;bug2_planner/libbug2_plugin.so" "damped;damped_lloyd_law/libdamped_lloyd_plugin.so")
+  list(GET case 0 name)
+  list(GET case 1 plugin)
+  run("covsim run --plugin ${plugin}" ${prefix}/bin/covsim run ${WORK}/u_${name}.json
+      --out ${WORK}/run-${name} --plugin ${WORK}/${plugin})
+  file(READ ${WORK}/run-${name}/final.json final)
+  # Converged; a motion out of Ω would have stopped the run with an error.
+  if(NOT final MATCHES "\"converged\": true")
+    message(FATAL_ERROR "the ${name} plugin's run did not converge:\n${final}")
+  endif()
+endforeach()
+# Without the plugin, the scenario names an unknown planner: a clear error, exit 2.
+execute_process(COMMAND ${prefix}/bin/covsim run ${WORK}/u_bug2.json --out ${WORK}/no-plugin
+                RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "\\$.planner.type: expected one of")
+  message(FATAL_ERROR "a scenario naming an unloaded plugin's planner: ${rc}: ${err}")
+endif()
+message(STATUS "examples built and ran against the installed covsim")
