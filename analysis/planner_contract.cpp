@@ -12,7 +12,6 @@
 #include "core/geometry/environment.hpp"
 #include "core/geometry/visibility_graph.hpp"
 #include "core/random_stream.hpp"
-#include "planners/grid_astar.hpp"
 #include "planners/planner_registry.hpp"
 #include "planners/tangent_bug.hpp"
 #include "scenarios/obstacle_course.hpp"
@@ -25,13 +24,6 @@ constexpr std::uint64_t kCasesPerMap = 10;
 
 std::string number(double v) {
   return std::isinf(v) ? "inf" : fmt::format("{}", v);
-}
-
-double perimeter(const std::vector<Vec2>& ring) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < ring.size(); ++i)
-    sum += distance(ring[i], ring[(i + 1) % ring.size()]);
-  return sum;
 }
 
 // One map of the suite, shared by kCasesPerMap consecutive cases.
@@ -141,10 +133,14 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
   const Vec2 projection = res.reachable ? res.goal : env.closest_point(res.goal);
   const double tol = 1e-5 * env.diameter();
 
+  const PlannerEntry* entry = planner_registry().find(setup.planner);
   PlannerConfig config;
   config.type = setup.planner;
-  const double resolution = setup.resolution.value_or(map.spec.clearance / 4.0);
-  if (setup.planner == "grid_astar") config.params.set("resolution", resolution);
+  if (entry != nullptr && entry->contract.course_params)
+    config.params = entry->contract.course_params(map.spec.clearance);
+  if (setup.resolution) config.params.set("resolution", *setup.resolution);
+  if (entry != nullptr) config.params = with_defaults(entry->params, config.params);
+  const bool complete = setup.complete.value_or(entry == nullptr || entry->contract.complete);
   const SensorSpec sensor{setup.noise_sigma};
   std::unique_ptr<Planner> planner =
       setup.make ? setup.make(env, sensor) : planner_source(config, {env, sensor})();
@@ -207,26 +203,13 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
   const GeodesicPath path = map.graph->shortest_path(res.start, res.reachable ? res.goal : x);
   res.shortest = path.length;
   res.bound = INFINITY;
-  if (setup.planner == "visibility_graph") {
-    res.bound = res.shortest * (1.0 + 1e-9) + tol;
-  } else if (setup.planner == "grid_astar") {
+  if (entry != nullptr && entry->contract.path_bound && !setup.make) {
     const std::size_t turns = path.points.size() >= 2 ? path.points.size() - 2 : 0;
-    res.bound = grid_path_bound(res.shortest, turns, resolution) + tol;
-  } else if (const auto* bug = dynamic_cast<const TangentBug*>(planner.get())) {
-    res.bound = res.shortest + tol;
-    // Each boundary-following episode, and each obstacle only steered round, once.
-    for (std::uint32_t ring : bug->episodes())
-      res.bound += perimeter(env.rings()[ring]);
-    for (std::uint32_t ring : bug->engaged()) {
-      const auto& e = bug->episodes();
-      if (std::find(e.begin(), e.end(), ring) == e.end()) res.bound += perimeter(env.rings()[ring]);
-    }
-    if (!res.reachable && !bug->episodes().empty())
-      res.bound += 0.5 * perimeter(env.rings()[bug->episodes().back()]);
-    // Range noise makes local minima and leave points where there are none.
-    if (setup.noise_sigma > 0.0) res.bound *= 1.5;
+    res.bound = entry->contract.path_bound(PathBoundCase{*planner, env, config.params, res.shortest,
+                                                         turns, res.reachable, setup.noise_sigma}) +
+                tol;
   }
-  if (setup.complete) {
+  if (complete) {
     if (res.reachable && res.status != PlanStatus::reached)
       fail(fmt::format("did not reach a reachable goal ({})", to_string(res.status)));
     if (!res.reachable && res.status != PlanStatus::projected)

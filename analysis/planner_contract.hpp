@@ -14,14 +14,12 @@
 // - for the others (potential_field, straight_line): a goal not reached is reported as a
 //   stall, honestly.
 //
-// Path-length bounds, L* the shortest path to where the planner should end:
-// - tangent_bug: L* + the perimeter of the obstacle followed in each boundary-following
-//   episode + the perimeter of each obstacle only steered round in motion to goal (+ half the
-//   enclosing obstacle's perimeter for a goal outside Ω: the walk to the projection after the
-//   loop), for steps no longer than the narrowest passage; with range noise, 1.5 times that
-//   (noise makes local minima and leave points where there are none);
-// - grid_astar: 1.0824 L* + 4 h (v + 1) (grid_path_bound);
-// - visibility_graph: L* (to rounding).
+// What a planner promises is declared in its registry entry (PlannerEntry::contract): whether
+// it is complete, its path-length bound (L* the shortest path to where it should end), and
+// parameters for the suite's courses. tangent_bug: L* + the perimeter of the obstacle followed
+// in each boundary-following episode + that of each obstacle only steered round (+ half the
+// enclosing obstacle's for a goal outside Ω), ×1.5 with range noise; grid_astar: 1.0824 L* +
+// 4 h (v + 1); visibility_graph: L*.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -40,13 +38,14 @@ struct ContractSetup {
   double range = INFINITY;   // the range sensor's range, metres
   double noise_sigma = 0.0;  // Gaussian range noise, metres
   double step = 0.05;        // metres per step
-  // Whether the planner promises to reach what is reachable (and project the rest).
-  bool complete = true;
-  // grid_astar's cell side (unset: a quarter of the courses' clearance, so that every
-  // passage holds free cells).
+  // Whether the planner promises to reach what is reachable (and project the rest); unset:
+  // what its registry entry declares (true for a planner given by `make` alone).
+  std::optional<bool> complete;
+  // grid_astar's cell side (unset: what its entry asks for the courses: a quarter of their
+  // clearance, so that every passage holds free cells).
   std::optional<double> resolution;
   // Builds the planner under test for a course (a user's own planner, say); unset: the
-  // planner named `planner`, from the planner factory.
+  // planner named `planner`, from the registry.
   std::function<std::unique_ptr<Planner>(const Environment&, const SensorSpec&)> make;
   // A one-line description, e.g. "tangent_bug range=0.5 noise=0".
   std::string label() const;

@@ -107,6 +107,15 @@ PlannerEntry grid_astar_entry() {
     const Environment* env = &ctx.environment;
     return [env, grid] { return std::make_unique<GridAStar>(*env, grid); };
   };
+  e.contract.complete = true;  // for passages a few cells wide
+  e.contract.path_bound = [resolution](const PathBoundCase& c) {
+    return grid_path_bound(c.shortest, c.turns, resolution(c.environment, c.params));
+  };
+  e.contract.course_params = [](double clearance) {
+    Params p;
+    p.set("resolution", clearance / 4.0);  // every passage holds free cells
+    return p;
+  };
   return e;
 }
 

@@ -25,11 +25,34 @@ struct PlannerContext {
 // Builds one robot's planner.
 using PlannerSource = std::function<std::unique_ptr<Planner>()>;
 
+// One case of the planner contract suite (analysis/planner_contract), as a bound sees it.
+struct PathBoundCase {
+  const Planner& planner;  // as it ended the case
+  const Environment& environment;
+  const Params& params;  // the planner's parameters in this case
+  double shortest;       // L*: the shortest path to where it should end
+  std::size_t turns;     // the reflex vertices L* turns at
+  bool reachable;        // the goal lies in Ω
+  double noise_sigma;    // the sensor's range noise
+};
+
+// What a planner promises, checked by the planner contract suite.
+struct PlannerContract {
+  // It reaches every goal in Ω and settles at a closest point of Ω to any other goal.
+  bool complete = false;
+  // The longest path it may take in a case; unset: no bound.
+  std::function<double(const PathBoundCase&)> path_bound;
+  // Parameters for the suite's courses, whose narrowest passage is `clearance` metres
+  // (a grid planner needs cells that fit); unset: its defaults.
+  std::function<Params(double clearance)> course_params;
+};
+
 struct PlannerEntry : ComponentInfo {
   std::function<PlannerSource(const PlannerContext&, const Params&)> make;
   // Optional: checks that need the environment (a grid too fine for it, say), run when a
   // scenario is loaded rather than when its run starts; throw ParamError.
   std::function<void(const Environment&, const Params&)> check;
+  PlannerContract contract;
 };
 
 // A scenario's "planner": the type, and its parameters validated against its schema.

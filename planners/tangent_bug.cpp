@@ -289,6 +289,31 @@ PlannerEntry tangent_bug_entry() {
     p.noise_margin = 3.0 * ctx.sensor.noise_sigma;
     return [p] { return std::make_unique<TangentBug>(p); };
   };
+  e.contract.complete = true;
+  // L* + the perimeter of the ring followed in each boundary-following episode + that of
+  // each ring only steered round (+ half the enclosing ring's for a goal outside Ω: the walk
+  // to the projection); range noise makes local minima and leave points where there are
+  // none, so with noise 1.5 times that (docs/tangent_bug.md).
+  e.contract.path_bound = [](const PathBoundCase& c) {
+    const auto& bug = dynamic_cast<const TangentBug&>(c.planner);
+    const auto perimeter = [&](std::uint32_t ring) {
+      const std::vector<Vec2>& r = c.environment.rings()[ring];
+      double sum = 0.0;
+      for (std::size_t i = 0; i < r.size(); ++i)
+        sum += distance(r[i], r[(i + 1) % r.size()]);
+      return sum;
+    };
+    double bound = c.shortest;
+    const auto& episodes = bug.episodes();
+    for (std::uint32_t ring : episodes)
+      bound += perimeter(ring);
+    for (std::uint32_t ring : bug.engaged()) {
+      if (std::find(episodes.begin(), episodes.end(), ring) == episodes.end())
+        bound += perimeter(ring);
+    }
+    if (!c.reachable && !episodes.empty()) bound += 0.5 * perimeter(episodes.back());
+    return c.noise_sigma > 0.0 ? 1.5 * bound : bound;
+  };
   return e;
 }
 

@@ -16,6 +16,8 @@ PlannerEntry visibility_graph_entry() {
     auto graph = std::make_shared<const VisibilityGraph>(ctx.environment);
     return [graph] { return std::make_unique<VisibilityGraphPlanner>(graph); };
   };
+  e.contract.complete = true;
+  e.contract.path_bound = [](const PathBoundCase& c) { return c.shortest * (1.0 + 1e-9); };
   return e;
 }
 
