@@ -188,6 +188,11 @@ RunResult Kernel::run_until(const std::function<bool(const Kernel&)>& predicate)
   return run_loop(Limits{SimTime::max(), UINT64_MAX, &predicate});
 }
 
+RunResult Kernel::run_until(SimTime t, std::uint64_t n) {
+  check_not_past(t);
+  return run_loop(Limits{t, n, nullptr});
+}
+
 RunResult Kernel::run_events(std::uint64_t n) {
   return run_loop(Limits{SimTime::max(), n, nullptr});
 }

@@ -78,6 +78,8 @@ class Kernel {
   // Stops as soon as the predicate holds: checked before the first event and after each.
   RunResult run_until(const std::function<bool(const Kernel&)>& predicate);
   RunResult run_events(std::uint64_t n);
+  // At most n events, none later than t; when none is left at or before t the clock reads t.
+  RunResult run_until(SimTime t, std::uint64_t n);
   // From inside a handler: the current run call returns after this event.
   void stop() { stop_requested_ = true; }
 

@@ -81,6 +81,7 @@ class CoverageController {
   const Environment& environment() const { return env_; }
   const CellIntegrator& integrator() const { return integrator_; }
   const CoverageLaw& law() const { return *law_; }
+  CoverageLaw& law() { return *law_; }
   const NeighborView& view() const { return *view_; }
   bool decentralized() const { return view_->decentralized(); }
   NetworkTotals network_totals() const { return view_->totals(); }

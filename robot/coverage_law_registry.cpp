@@ -1,6 +1,7 @@
 #include "robot/coverage_law_registry.hpp"
 
 #include "robot/euclidean_lloyd_law.hpp"
+#include "robot/external_law.hpp"
 #include "robot/geodesic_lloyd_law.hpp"
 #include "robot/virtual_generators_law.hpp"
 
@@ -8,8 +9,8 @@ namespace covsim {
 
 Registry<LawEntry>& coverage_law_registry() {
   static Registry<LawEntry> registry(
-      "coverage law",
-      {virtual_generators_entry(), euclidean_lloyd_entry(), geodesic_lloyd_entry()});
+      "coverage law", {virtual_generators_entry(), euclidean_lloyd_entry(), geodesic_lloyd_entry(),
+                       external_law_entry()});
   return registry;
 }
 

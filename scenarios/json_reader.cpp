@@ -54,7 +54,7 @@ nlohmann::json read_json_file(const std::filesystem::path& file) {
 }
 
 void JsonValue::fail(std::string_view what) const {
-  throw ScenarioError(fmt::format("{}: {}: {}", file_, path_, what));
+  throw ScenarioError(file_, path_, std::string(what));
 }
 
 JsonValue JsonValue::at(std::string_view key) const {
@@ -84,8 +84,8 @@ void JsonValue::only_keys(const std::vector<std::string>& allowed) const {
       std::string list;
       for (const std::string& a : allowed)
         list += (list.empty() ? "" : ", ") + a;
-      throw ScenarioError(fmt::format("{}: {}.{}: unknown key \"{}\" (expected one of: {})", file_,
-                                      path_, key, key, list));
+      throw ScenarioError(file_, fmt::format("{}.{}", path_, key),
+                          fmt::format("unknown key \"{}\" (expected one of: {})", key, list));
     }
   }
 }

@@ -5,9 +5,19 @@
 namespace covsim {
 
 // A scenario (or other input file) that cannot be used. The message reads
-// "FILE: $.json.path: what was expected", or "FILE:LINE:COLUMN: ..." for malformed JSON.
+// "FILE: $.json.path: what was expected", or "FILE:LINE:COLUMN: ..." for malformed JSON;
+// where the error is at a JSON value, file() and path() name it on their own too.
 struct ScenarioError : std::runtime_error {
   using std::runtime_error::runtime_error;
+  ScenarioError(std::string file, std::string path, const std::string& what)
+      : std::runtime_error(file + ": " + path + ": " + what),
+        file_(std::move(file)),
+        path_(std::move(path)) {}
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }  // "$.network.loss.p"; empty if none
+
+ private:
+  std::string file_, path_;
 };
 
 }  // namespace covsim

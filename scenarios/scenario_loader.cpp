@@ -31,7 +31,7 @@ std::shared_ptr<const Environment> read_environment(const JsonValue& v) {
     const std::string at = e.ring() < 0    ? v.path()
                            : e.ring() == 0 ? v.path() + ".outer"
                                            : fmt::format("{}.holes[{}]", v.path(), e.ring() - 1);
-    throw ScenarioError(fmt::format("{}: {}: {}", v.file(), at, e.what()));
+    throw ScenarioError(v.file(), at, e.what());
   }
 }
 

@@ -1,0 +1,18 @@
+#include "robot/external_law.hpp"
+
+namespace covsim {
+
+Vec2 ExternalLaw::target(const Robot& robot, const Knowledge&) {
+  const auto it = targets_.find(robot.id);
+  return it == targets_.end() ? robot.position : it->second;
+}
+
+LawEntry external_law_entry() {
+  LawEntry e;
+  e.name = "external";
+  e.description = "targets set by the program driving the simulation (Simulation::set_target)";
+  e.make = [](const LawContext&, const Params&) { return std::make_unique<ExternalLaw>(); };
+  return e;
+}
+
+}  // namespace covsim
