@@ -32,6 +32,7 @@ struct ContractMap {
   std::unique_ptr<Environment> env;
   std::unique_ptr<VisibilityGraph> graph;
   double boundary_length = 0.0;
+  double narrowest = 0.0;  // passage, for planners that need a fine enough map
 };
 
 ContractMap make_map(std::uint64_t seed, std::uint64_t group) {
@@ -43,6 +44,7 @@ ContractMap make_map(std::uint64_t seed, std::uint64_t group) {
   m.spec.clearance = rng.uniform(0.1, 0.3);
   const ObstacleCourse c = obstacle_course(rng.next_u64(), m.spec);
   m.env = std::make_unique<Environment>(c.outer, c.holes);
+  m.narrowest = c.narrowest;
   m.graph = std::make_unique<VisibilityGraph>(*m.env);
   for (const BoundaryEdge& e : m.env->boundary())
     m.boundary_length += distance(e.a, e.b);
@@ -86,26 +88,6 @@ Vec2 point_inside(const Environment& env, RandomStream& rng) {
   }
 }
 
-std::string_view mode_name(TangentBug::Mode m) {
-  switch (m) {
-    case TangentBug::Mode::motion_to_goal:
-      return "motion_to_goal";
-    case TangentBug::Mode::approach:
-      return "approach";
-    case TangentBug::Mode::follow:
-      return "follow";
-    case TangentBug::Mode::leave:
-      return "leave";
-    case TangentBug::Mode::to_projection:
-      return "to_projection";
-    case TangentBug::Mode::to_closest:
-      return "to_closest";
-    case TangentBug::Mode::done:
-      return "done";
-  }
-  return "unknown";
-}
-
 ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std::uint64_t seed,
                         std::uint64_t index, bool record = false) {
   const Environment& env = *map.env;
@@ -137,7 +119,7 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
   PlannerConfig config;
   config.type = setup.planner;
   if (entry != nullptr && entry->contract.course_params)
-    config.params = entry->contract.course_params(map.spec.clearance);
+    config.params = entry->contract.course_params(map.narrowest);
   if (setup.resolution) config.params.set("resolution", *setup.resolution);
   if (entry != nullptr) config.params = with_defaults(entry->params, config.params);
   const bool complete = setup.complete.value_or(entry == nullptr || entry->contract.complete);
@@ -174,7 +156,7 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
     if (record) {
       res.path.push_back(x);
       const auto* bug = dynamic_cast<const TangentBug*>(planner.get());
-      res.modes.emplace_back(bug != nullptr ? mode_name(bug->mode()) : "");
+      res.modes.emplace_back(bug != nullptr ? to_string(bug->mode()) : "");
     }
     res.length += distance(x, next);
     x = next;

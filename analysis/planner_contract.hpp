@@ -42,7 +42,7 @@ struct ContractSetup {
   // what its registry entry declares (true for a planner given by `make` alone).
   std::optional<bool> complete;
   // grid_astar's cell side (unset: what its entry asks for the courses: a quarter of their
-  // clearance, so that every passage holds free cells).
+  // narrowest passage, so that every passage holds connected free cells).
   std::optional<double> resolution;
   // Builds the planner under test for a course (a user's own planner, say); unset: the
   // planner named `planner`, from the registry.

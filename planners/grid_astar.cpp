@@ -111,9 +111,9 @@ PlannerEntry grid_astar_entry() {
   e.contract.path_bound = [resolution](const PathBoundCase& c) {
     return grid_path_bound(c.shortest, c.turns, resolution(c.environment, c.params));
   };
-  e.contract.course_params = [](double clearance) {
+  e.contract.course_params = [](double narrowest) {
     Params p;
-    p.set("resolution", clearance / 4.0);  // every passage holds free cells
+    p.set("resolution", narrowest / 4.0);  // every passage holds connected free cells
     return p;
   };
   return e;

@@ -44,7 +44,12 @@ FreeRay free_ray(const SensorReading& r, Vec2 u, double tolerance) {
     if (std::fabs(denom) <= 1e-12 * norm(s)) continue;  // parallel: running along it
     const double t = cross(a - x, s) / denom;
     const double v = cross(a - x, u) / denom;
-    if (t > tolerance && v >= -1e-12 && v <= 1.0 + 1e-12 && t < f.distance) {
+    // A wall met within the tolerance is one the robot touches (judged above) unless it is
+    // not among the contacts: then it blocks however near.
+    const std::uint32_t edge = r.visible.pieces[k].edge;
+    const bool touching = std::any_of(r.contacts.begin(), r.contacts.end(),
+                                      [&](const ContactEdge& c) { return c.edge == edge; });
+    if (t > (touching ? tolerance : 0.0) && v >= -1e-12 && v <= 1.0 + 1e-12 && t < f.distance) {
       f.distance = t;
       f.blocker = r.piece_rings[k];
     }

@@ -42,9 +42,9 @@ struct PlannerContract {
   bool complete = false;
   // The longest path it may take in a case; unset: no bound.
   std::function<double(const PathBoundCase&)> path_bound;
-  // Parameters for the suite's courses, whose narrowest passage is `clearance` metres
-  // (a grid planner needs cells that fit); unset: its defaults.
-  std::function<Params(double clearance)> course_params;
+  // Parameters for a course of the suite whose narrowest passage is `narrowest` metres (a
+  // grid planner needs cells that fit); unset: its defaults.
+  std::function<Params(double narrowest)> course_params;
 };
 
 struct PlannerEntry : ComponentInfo {

@@ -30,6 +30,26 @@ std::string_view to_string(PlanStatus s) {
   return "unknown";
 }
 
+std::string_view to_string(TangentBug::Mode m) {
+  switch (m) {
+    case TangentBug::Mode::motion_to_goal:
+      return "motion_to_goal";
+    case TangentBug::Mode::approach:
+      return "approach";
+    case TangentBug::Mode::follow:
+      return "follow";
+    case TangentBug::Mode::leave:
+      return "leave";
+    case TangentBug::Mode::to_projection:
+      return "to_projection";
+    case TangentBug::Mode::to_closest:
+      return "to_closest";
+    case TangentBug::Mode::done:
+      return "done";
+  }
+  return "unknown";
+}
+
 TangentBugParams TangentBugParams::for_environment(double diameter, double boundary_length) {
   return TangentBugParams{1e-9 * diameter, 1e-9 * diameter, 10.0 * (boundary_length + diameter),
                           0.0};
@@ -47,6 +67,7 @@ void TangentBug::set_goal(Vec2 goal) {
   episodes_.clear();
   engaged_.clear();
   loops_ = recoveries_ = 0;
+  leave_length_ = 0.0;
 }
 
 PlanStep TangentBug::finish(Vec2 at, PlanStatus s) {
@@ -199,6 +220,7 @@ TangentBug::Decision TangentBug::follow(const SensorReading& r, double max_step)
   if (reach.distance < d_followed_ - p_.progress) {
     bound_ = d_followed_;  // what every later node and leave must beat
     leave_to_ = reach.point;
+    leave_length_ += distance(x, leave_to_);
     mode_ = Mode::leave;
     return std::nullopt;
   }
@@ -290,10 +312,13 @@ PlannerEntry tangent_bug_entry() {
     return [p] { return std::make_unique<TangentBug>(p); };
   };
   e.contract.complete = true;
-  // L* + the perimeter of the ring followed in each boundary-following episode + that of
-  // each ring only steered round (+ half the enclosing ring's for a goal outside Ω: the walk
-  // to the projection); range noise makes local minima and leave points where there are
-  // none, so with noise 1.5 times that (docs/tangent_bug.md).
+  // An empirical envelope, not a theorem (Kamon et al. prove termination, not a length
+  // bound): L* + the perimeter of the ring followed in each boundary-following episode + that
+  // of each ring only steered round + every leave segment (a leave heads for the visible
+  // point nearest the goal, however far off the shortest path) (+ half the enclosing ring's
+  // perimeter for a goal outside Ω: the walk to the projection); range noise makes local
+  // minima and leave points where there are none, so with noise 1.5 times that
+  // (docs/tangent_bug.md).
   e.contract.path_bound = [](const PathBoundCase& c) {
     const auto& bug = dynamic_cast<const TangentBug&>(c.planner);
     const auto perimeter = [&](std::uint32_t ring) {
@@ -303,7 +328,7 @@ PlannerEntry tangent_bug_entry() {
         sum += distance(r[i], r[(i + 1) % r.size()]);
       return sum;
     };
-    double bound = c.shortest;
+    double bound = c.shortest + bug.leave_length();
     const auto& episodes = bug.episodes();
     for (std::uint32_t ring : episodes)
       bound += perimeter(ring);

@@ -76,6 +76,9 @@ class TangentBug final : public Planner {
   // to goal or followed, each once, in increasing order.
   const std::vector<std::uint32_t>& engaged() const { return engaged_; }
   std::uint32_t recoveries() const { return recoveries_; }
+  // For the current goal: the summed length of the straight leave segments it set out on
+  // (from the leave point to the reach point T), as planned.
+  double leave_length() const { return leave_length_; }
 
  private:
   using Decision = std::optional<PlanStep>;  // nullopt: the mode changed, decide again
@@ -120,7 +123,10 @@ class TangentBug final : public Planner {
   std::vector<std::uint32_t> engaged_;
   void engage(std::uint32_t ring);
   std::uint32_t loops_ = 0, recoveries_ = 0;
+  double leave_length_ = 0.0;
 };
+
+std::string_view to_string(TangentBug::Mode m);
 
 PlannerEntry tangent_bug_entry();
 

@@ -34,26 +34,48 @@ namespace {
 
 using Ring = std::vector<Vec2>;
 
+struct Outline {
+  Ring ring;
+  double slot = INFINITY;  // the width of the narrowest slot between its arms
+};
+
 // Outlines in local coordinates: arms of thickness t.
-Ring shape_outline(ObstacleShape s, RandomStream& rng) {
+Outline shape_outline(ObstacleShape s, RandomStream& rng) {
   const double t = rng.uniform(0.03, 0.2);
   const double a = rng.uniform(0.8, 3.0), b = rng.uniform(0.8, 3.0);
   switch (s) {
     case ObstacleShape::box: {
       const double w = rng.uniform(0.2, 1.6), h = rng.uniform(0.2, 1.6);
-      return {{0, 0}, {w, 0}, {w, h}, {0, h}};
+      return {{{0, 0}, {w, 0}, {w, h}, {0, h}}};
     }
     case ObstacleShape::thin_wall:
-      return {{0, 0}, {a, 0}, {a, t}, {0, t}};
+      return {{{0, 0}, {a, 0}, {a, t}, {0, t}}};
     case ObstacleShape::t_wall:
-      return {{-a / 2, 0}, {a / 2, 0},  {a / 2, t},  {t / 2, t},
-              {t / 2, b},  {-t / 2, b}, {-t / 2, t}, {-a / 2, t}};
+      return {{{-a / 2, 0},
+               {a / 2, 0},
+               {a / 2, t},
+               {t / 2, t},
+               {t / 2, b},
+               {-t / 2, b},
+               {-t / 2, t},
+               {-a / 2, t}}};
     case ObstacleShape::l_wall:
-      return {{0, 0}, {a, 0}, {a, t}, {t, t}, {t, b}, {0, b}};
+      return {{{0, 0}, {a, 0}, {a, t}, {t, t}, {t, b}, {0, b}}};
     case ObstacleShape::e_wall: {
       const double h = std::max(b, 5 * t), m = (h - t) / 2;
-      return {{0, 0},     {a, 0},     {a, t},     {t, t},     {t, m}, {a, m},
-              {a, m + t}, {t, m + t}, {t, h - t}, {a, h - t}, {a, h}, {0, h}};
+      return {{{0, 0},
+               {a, 0},
+               {a, t},
+               {t, t},
+               {t, m},
+               {a, m},
+               {a, m + t},
+               {t, m + t},
+               {t, h - t},
+               {a, h - t},
+               {a, h},
+               {0, h}},
+              m - t};
     }
     case ObstacleShape::comb: {
       const auto k = static_cast<int>(3 + rng.below(3));  // teeth
@@ -68,11 +90,11 @@ Ring shape_outline(ObstacleShape s, RandomStream& rng) {
           if (i > 0) r.push_back({x, t});
         }
       }
-      return r;
+      return {r, (w - t) / (k - 1) - t};
     }
     case ObstacleShape::cup: {
       const double w = std::max(a, 4 * t), h = std::max(b, 2 * t);
-      return {{0, 0}, {w, 0}, {w, h}, {w - t, h}, {w - t, t}, {t, t}, {t, h}, {0, h}};
+      return {{{0, 0}, {w, 0}, {w, h}, {w - t, h}, {w - t, t}, {t, t}, {t, h}, {0, h}}, w - 2 * t};
     }
   }
   return {};
@@ -98,12 +120,14 @@ double ring_distance(const Ring& p, const Ring& q) {
   return d;
 }
 
-Ring outer_ring(const ObstacleCourseSpec& spec, RandomStream& rng) {
+// Notches narrow the narrowest passage to their width.
+Ring outer_ring(const ObstacleCourseSpec& spec, RandomStream& rng, double& narrowest) {
   const double w = spec.width, h = spec.height;
   Ring r{{0, 0}};
   const auto notch = [&](bool top) {
     const double nw = rng.uniform(0.3, 0.12 * w), depth = rng.uniform(0.1, 0.25) * h;
     const double x0 = rng.uniform(0.15 * w, 0.85 * w - nw);
+    narrowest = std::min(narrowest, nw);
     if (top) {
       r.insert(r.end(), {{x0 + nw, h}, {x0 + nw, h - depth}, {x0, h - depth}, {x0, h}});
     } else {
@@ -128,7 +152,8 @@ ObstacleCourse obstacle_course(std::uint64_t seed, const ObstacleCourseSpec& spe
   if (spec.obstacles > 200) throw std::invalid_argument("obstacle course: at most 200 obstacles");
   RandomStream rng(seed, 0, "obstacle-course");
   ObstacleCourse c;
-  c.outer = outer_ring(spec, rng);
+  c.narrowest = spec.clearance;
+  c.outer = outer_ring(spec, rng, c.narrowest);
   constexpr ObstacleShape kShapes[] = {
       ObstacleShape::box,    ObstacleShape::thin_wall, ObstacleShape::t_wall, ObstacleShape::l_wall,
       ObstacleShape::e_wall, ObstacleShape::comb,      ObstacleShape::cup};
@@ -136,12 +161,12 @@ ObstacleCourse obstacle_course(std::uint64_t seed, const ObstacleCourseSpec& spe
        attempt < 60 * static_cast<int>(spec.obstacles) && c.holes.size() < spec.obstacles;
        ++attempt) {
     const ObstacleShape shape = kShapes[rng.below(std::size(kShapes))];
-    Ring local = shape_outline(shape, rng);
+    const Outline local = shape_outline(shape, rng);
     const double angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
     const Vec2 at{rng.uniform(0.0, spec.width), rng.uniform(0.0, spec.height)};
     const double cs = std::cos(angle), sn = std::sin(angle);
     Ring hole;
-    for (Vec2 p : local)
+    for (Vec2 p : local.ring)
       hole.push_back(at + Vec2{cs * p.x - sn * p.y, sn * p.x + cs * p.y});
     bool fits = ring_distance(hole, c.outer) >= spec.clearance;
     for (Vec2 p : hole)
@@ -153,6 +178,7 @@ ObstacleCourse obstacle_course(std::uint64_t seed, const ObstacleCourseSpec& spe
     if (!fits) continue;
     c.holes.push_back(std::move(hole));
     c.shapes.push_back(shape);
+    c.narrowest = std::min(c.narrowest, local.slot);
   }
   return c;
 }

@@ -19,7 +19,7 @@ std::string_view to_string(ObstacleShape s);
 struct ObstacleCourseSpec {
   double width = 10.0, height = 8.0;  // metres
   std::uint32_t obstacles = 7;        // at most; fewer when they do not fit
-  double clearance = 0.15;            // the narrowest passage, metres
+  double clearance = 0.15;            // between obstacles and from the walls, metres
   std::uint32_t notches = 2;          // at most, cut into the bottom and top walls
 };
 
@@ -27,6 +27,9 @@ struct ObstacleCourse {
   std::vector<Vec2> outer;
   std::vector<std::vector<Vec2>> holes;
   std::vector<ObstacleShape> shapes;  // of each hole
+  // The narrowest passage anywhere: the clearance, a notch, or a slot between the arms of an
+  // E, a comb or a cup, which may be narrower than the clearance.
+  double narrowest = 0.0;
 };
 
 // Throws std::invalid_argument for a spec out of range.

@@ -216,14 +216,24 @@ std::vector<double> Environment::boundary_crossings(Vec2 a, Vec2 b) const {
   std::vector<double> ts{0.0, 1.0};
   const Vec2 d = b - a;
   const double len = norm(d);
+  // A segment that passes a vertex within a rounding error of it may cross neither edge
+  // there as computed, and then run along the next edge inside the tolerance band, where its
+  // midpoint looks inside Ω: vertices this near split the segment too.
+  const double near = 1e3 * tolerance_;
   Box box;
   box.add(a);
   box.add(b);
+  box.lo = box.lo - Vec2{near, near};
+  box.hi = box.hi + Vec2{near, near};
   edge_index_.query(box, [&](std::uint32_t e) {
     const Vec2 p = boundary_[e].a, q = boundary_[e].b;
     const Vec2 s = q - p;
     const double denom = cross(d, s);
     const double scale = len * norm(s);
+    if (len > 0.0) {
+      const double t = dot(p - a, d) / (len * len);  // edge e starts at vertex p
+      if (t > 0.0 && t < 1.0 && std::fabs(cross(p - a, d)) <= near * len) ts.push_back(t);
+    }
     if (std::fabs(denom) > 1e-12 * scale) {
       const double t = cross(p - a, s) / denom;
       const double u = cross(p - a, d) / denom;

@@ -11,7 +11,7 @@ K::Point_2 pt(Vec2 p) {
 }
 }  // namespace
 
-int orientation(Vec2 a, Vec2 b, Vec2 c) {
+int orientation_exact(Vec2 a, Vec2 b, Vec2 c) {
   return static_cast<int>(CGAL::orientation(pt(a), pt(b), pt(c)));
 }
 

@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+
+#include "core/geometry/predicates.hpp"
 
 namespace covsim {
 
@@ -35,11 +38,14 @@ bool clip_to_disk(Vec2 p, double r, Vec2& a, Vec2& b) {
   return true;
 }
 
+// Window boundaries are mesh vertices, so that which side of a boundary a vertex lies on is
+// an exact orientation test: a viewpoint a rounding error from a mesh edge or vertex then
+// sees what it would see exactly, with no window turned the wrong way.
 struct Window {
   std::uint32_t triangle;
   int edge;    // the edge of `triangle` being looked at
-  Vec2 right;  // directions from the viewpoint: the window runs counter-clockwise from
-  Vec2 left;   // `right` to `left` and spans less than 180 degrees
+  Vec2 right;  // the window runs counter-clockwise from the direction of `right` to that of
+  Vec2 left;   // `left`, as seen from the viewpoint, and spans less than 180 degrees
 };
 
 struct Sorted {
@@ -52,7 +58,8 @@ class Expansion {
   Expansion(const Environment& env, Vec2 p, double range)
       : mesh_(env.mesh()), p_(p), range_(range), tol_(env.tolerance()) {}
 
-  // Looks from p at edge i of triangle t, from its inner side, through the window.
+  // Looks from p at edge i of triangle t, from its inner side, through the window from the
+  // direction of point `right` to that of point `left`.
   void look(std::uint32_t t, int i, Vec2 right, Vec2 left) {
     stack_.push_back({t, i % 3, right, left});
   }
@@ -67,10 +74,10 @@ class Expansion {
     while (!stack_.empty()) {
       const Window w = stack_.back();
       stack_.pop_back();
-      if (cross(w.right, w.left) <= 0.0) continue;  // empty window
+      if (orientation(p_, w.right, w.left) <= 0) continue;  // empty window
       const auto& tri = mesh_.triangles[w.triangle];
       const Vec2 a = mesh_.corner(w.triangle, w.edge + 1), b = mesh_.corner(w.triangle, w.edge + 2);
-      Vec2 from = ray_line(p_, w.right, a, b), to = ray_line(p_, w.left, a, b);
+      Vec2 from = ray_line(p_, w.right - p_, a, b), to = ray_line(p_, w.left - p_, a, b);
       const std::int32_t n = tri.neighbor[static_cast<std::size_t>(w.edge)];
       if (n == FreeSpaceMesh::kBoundary) {
         const Vec2 mid = 0.5 * (from + to) - p_;
@@ -84,10 +91,9 @@ class Expansion {
       // far edges run right -> c and c -> left.
       const auto next = static_cast<std::uint32_t>(n);
       const int j = mesh_.edge_towards(next, w.triangle);
-      const Vec2 c = mesh_.corner(next, j) - p_;
-      const Vec2 left_of_right_part = cross(c, w.left) > 0.0 ? c : w.left;  // the more clockwise
-      const Vec2 right_of_left_part =
-          cross(w.right, c) > 0.0 ? c : w.right;  // the more counter-clockwise
+      const Vec2 c = mesh_.corner(next, j);
+      const Vec2 left_of_right_part = orientation(p_, c, w.left) > 0 ? c : w.left;
+      const Vec2 right_of_left_part = orientation(p_, w.right, c) > 0 ? c : w.right;
       stack_.push_back({next, (j + 1) % 3, w.right, left_of_right_part});
       stack_.push_back({next, (j + 2) % 3, right_of_left_part, w.left});
     }
@@ -143,60 +149,119 @@ class Expansion {
   std::vector<Sorted> sorted_;
 };
 
+// Where the viewpoint lies: in a triangle, exactly on one of its edges, or at one of its
+// corners.
+struct Place {
+  std::uint32_t triangle;
+  std::optional<int> edge;    // the edge p lies on
+  std::optional<int> corner;  // the corner p is
+  Vec2 p;                     // the viewpoint
+};
+
+// A mesh vertex within the tolerance of p, among the corners of t and of its neighbours, as
+// the triangle holding it and its corner there.
+std::optional<std::pair<std::uint32_t, int>> corner_near(const FreeSpaceMesh& mesh, std::uint32_t t,
+                                                         Vec2 p, double tol) {
+  std::optional<std::pair<std::uint32_t, int>> best;
+  double best_d = tol;
+  const auto consider = [&](std::uint32_t u) {
+    for (int k = 0; k < 3; ++k) {
+      const double d = norm(mesh.corner(u, k) - p);
+      if (d <= best_d) {
+        best_d = d;
+        best = std::pair{u, k};
+      }
+    }
+  };
+  consider(t);
+  for (std::int32_t n : mesh.triangles[t].neighbor) {
+    if (n != FreeSpaceMesh::kBoundary) consider(static_cast<std::uint32_t>(n));
+  }
+  return best;
+}
+
+// locate() accepts a point up to the tolerance outside its triangle, or outside Ω; exact
+// orientation tests walk from there to the triangle that holds p. Within the tolerance of a
+// mesh vertex p looks from the vertex (as it touches the walls through it); a p outside Ω
+// looks from its foot on the boundary edge it lies beyond.
+Place place_of(const FreeSpaceMesh& mesh, std::uint32_t t, Vec2 p, double tol) {
+  for (int hop = 0; hop < 256; ++hop) {
+    // The edge to cross: one p lies beyond, into a neighbour if there is one.
+    int outside = -1;
+    std::optional<int> on;
+    for (int k = 0; k < 3; ++k) {
+      const int o = orientation(mesh.corner(t, k + 1), mesh.corner(t, k + 2), p);
+      if (o == 0) on = k;
+      if (o < 0 && (outside < 0 || mesh.triangles[t].neighbor[static_cast<std::size_t>(outside)] ==
+                                       FreeSpaceMesh::kBoundary))
+        outside = k;
+    }
+    const std::int32_t n =
+        outside < 0 ? 0 : mesh.triangles[t].neighbor[static_cast<std::size_t>(outside)];
+    if (outside >= 0 && n != FreeSpaceMesh::kBoundary) {
+      t = static_cast<std::uint32_t>(n);
+      continue;
+    }
+    if (outside >= 0) {  // beyond a boundary edge: outside Ω
+      const Vec2 a = mesh.corner(t, outside + 1), b = mesh.corner(t, outside + 2);
+      p = project_to_segment(p, a, b).point;
+      on = outside;
+    }
+    if (const auto c = corner_near(mesh, t, p, tol))
+      return {c->first, std::nullopt, c->second, mesh.corner(c->first, c->second)};
+    return {t, on, std::nullopt, p};
+  }
+  return {t, std::nullopt, std::nullopt, p};
+}
+
 }  // namespace
 
 VisibleBoundary visible_boundary(const Environment& env, Vec2 p, double range) {
   const auto located = env.locate(p);
   if (!located || std::isnan(range) || range < 0.0) return {};
   const FreeSpaceMesh& mesh = env.mesh();
-  const std::uint32_t t = *located;
-  const double tol = env.tolerance();
+  const Place at = place_of(mesh, *located, p, env.tolerance());
+  const std::uint32_t t = at.triangle;
+  p = at.p;
   Expansion ex(env, p, range);
 
-  // Where p sits in its triangle decides which edges it looks at first.
-  for (int k = 0; k < 3; ++k) {
-    const std::uint32_t v = mesh.triangles[t].v[static_cast<std::size_t>(k)];
-    if (norm(mesh.vertices[v] - p) > tol) continue;
+  if (at.corner) {
     // At a vertex: every triangle around it, looking at the edge opposite the vertex.
+    const std::uint32_t v = mesh.triangles[t].v[static_cast<std::size_t>(*at.corner)];
     for (std::uint32_t s = mesh.star_start[v]; s < mesh.star_start[v + 1]; ++s) {
       const std::uint32_t u = mesh.star[s];
       const auto& tri = mesh.triangles[u];
-      const int at = tri.v[0] == v ? 0 : (tri.v[1] == v ? 1 : 2);
-      ex.look(u, at, mesh.corner(u, at + 1) - p, mesh.corner(u, at + 2) - p);
-      // Boundary edges through the vertex: v -> corner(at+1) is edge at+2; corner(at+2) -> v is
-      // edge at+1.
-      if (tri.neighbor[static_cast<std::size_t>((at + 2) % 3)] == FreeSpaceMesh::kBoundary)
-        ex.radial(p, mesh.corner(u, at + 1), v);
-      if (tri.neighbor[static_cast<std::size_t>((at + 1) % 3)] == FreeSpaceMesh::kBoundary)
-        ex.radial(mesh.corner(u, at + 2), p, tri.v[static_cast<std::size_t>((at + 2) % 3)]);
+      const int i = tri.v[0] == v ? 0 : (tri.v[1] == v ? 1 : 2);
+      ex.look(u, i, mesh.corner(u, i + 1), mesh.corner(u, i + 2));
+      // Boundary edges through the vertex: v -> corner(i+1) is edge i+2; corner(i+2) -> v is
+      // edge i+1.
+      if (tri.neighbor[static_cast<std::size_t>((i + 2) % 3)] == FreeSpaceMesh::kBoundary)
+        ex.radial(p, mesh.corner(u, i + 1), v);
+      if (tri.neighbor[static_cast<std::size_t>((i + 1) % 3)] == FreeSpaceMesh::kBoundary)
+        ex.radial(mesh.corner(u, i + 2), p, tri.v[static_cast<std::size_t>((i + 2) % 3)]);
     }
-    ex.run();
-    return ex.result();
-  }
-  for (int k = 0; k < 3; ++k) {
-    const Vec2 a = mesh.corner(t, k + 1), b = mesh.corner(t, k + 2);
-    if (std::fabs(cross(b - a, p - a)) > tol * norm(b - a)) continue;
+  } else if (at.edge) {
     // On edge k (between its ends): the other edges of this triangle and, across edge k,
     // of the neighbour; a boundary edge k is seen edge-on in both directions.
-    auto from_triangle = [&](std::uint32_t u, int edge) {
-      ex.look(u, edge + 1, mesh.corner(u, edge + 2) - p, mesh.corner(u, edge) - p);
-      ex.look(u, edge + 2, mesh.corner(u, edge) - p, mesh.corner(u, edge + 1) - p);
+    const int k = *at.edge;
+    const auto from_triangle = [&](std::uint32_t u, int edge) {
+      ex.look(u, edge + 1, mesh.corner(u, edge + 2), mesh.corner(u, edge));
+      ex.look(u, edge + 2, mesh.corner(u, edge), mesh.corner(u, edge + 1));
     };
     from_triangle(t, k);
     const std::int32_t n = mesh.triangles[t].neighbor[static_cast<std::size_t>(k)];
     if (n == FreeSpaceMesh::kBoundary) {
       const std::uint32_t edge = mesh.triangles[t].v[static_cast<std::size_t>((k + 1) % 3)];
-      ex.radial(p, b, edge);
-      ex.radial(a, p, edge);
+      ex.radial(p, mesh.corner(t, k + 2), edge);
+      ex.radial(mesh.corner(t, k + 1), p, edge);
     } else {
       const auto u = static_cast<std::uint32_t>(n);
       from_triangle(u, mesh.edge_towards(u, t));
     }
-    ex.run();
-    return ex.result();
+  } else {
+    for (int k = 0; k < 3; ++k)
+      ex.look(t, k, mesh.corner(t, k + 1), mesh.corner(t, k + 2));
   }
-  for (int k = 0; k < 3; ++k)
-    ex.look(t, k, mesh.corner(t, k + 1) - p, mesh.corner(t, k + 2) - p);
   ex.run();
   return ex.result();
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string_view>
 
 #include "analysis/planner_contract.hpp"
 #include "core/geometry/environment.hpp"
@@ -99,6 +100,46 @@ TEST_CASE("contract: a case is the same on every run, and reruns alone", "[contr
   CHECK(one.reproducer.find("--seed 20261121 --case 17") != std::string::npos);
   CHECK(one.path.size() == one.steps + 1);
   CHECK(one.rings.size() >= 2);
+}
+
+TEST_CASE("contract: cases that once failed a long run pass", "[contract]") {
+  // From 100000-case runs (`covsim planner-contract ... --seed 1 --case I`), each with the
+  // mechanism that made it fail.
+  struct Case {
+    const char* planner;
+    double range;
+    std::uint64_t index;
+    const char* mechanism;
+  };
+  const Case cases[] = {
+      {"tangent_bug", INFINITY, 93612,
+       "a viewpoint 1.8e-8 m past a comb tooth's corner, located in a triangle that did not "
+       "hold it: the wall beyond was not sensed and motion to goal stepped into it"},
+      {"tangent_bug", 0.5, 93612, "the same at a short range"},
+      {"tangent_bug", INFINITY, 16796,
+       "a leave segment to a reach point on a shadow ray, beyond the old path bound"},
+      {"tangent_bug", INFINITY, 86500, "the same"},
+      {"tangent_bug", INFINITY, 99656, "the same"},
+      {"potential_field", 0.5, 3760,
+       "a segment slipping past a T's reflex vertex into the crossbar, then along the stem "
+       "within the tolerance: segment_inside missed the crossing"},
+      {"potential_field", 0.5, 14602, "the same"},
+      {"grid_astar", INFINITY, 15286,
+       "a start in a comb's slot narrower than the clearance: no free cells at clearance / 4"},
+      {"grid_astar", INFINITY, 15342, "a projection in an E's slot: the same"},
+      {"grid_astar", INFINITY, 5933, "a goal in a comb's slot: the same"},
+      {"grid_astar", INFINITY, 8557, "a projection in a comb's slot: the same"},
+  };
+  for (const Case& c : cases) {
+    ContractSetup s;
+    s.planner = c.planner;
+    s.range = c.range;
+    s.complete = std::string_view(c.planner) != "potential_field";
+    const ContractResult r = run_contract_case(s, 1, c.index);
+    INFO(c.planner << " range " << c.range << " case " << c.index << ": " << c.mechanism << "\n"
+                   << r.failure);
+    CHECK(r.failure.empty());
+  }
 }
 
 namespace {

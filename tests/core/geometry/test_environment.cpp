@@ -164,3 +164,29 @@ TEST_CASE("ray casts stop where the ray leaves Ω", "[environment]") {
   CHECK(hit->point.x == Approx(0.0).margin(1e-12));
   CHECK(hit->point.y == Approx(4.0));
 }
+
+TEST_CASE("a segment that slips past a vertex into an obstacle is not in Ω", "[environment]") {
+  // A T: a crossbar [-1, 1] x [0, 0.1] under a stem [-0.05, 0.05] x [0.1, 1.5]. The segment
+  // comes from below, crosses the crossbar, passes the reflex vertex (0.05, 0.1) inside the
+  // stem by a little more than the tolerance and runs up the stem's side to a goal on it,
+  // within the tolerance of that side from its midpoint on: only the split at the vertex
+  // shows the crossing of the crossbar.
+  Environment env(square(-3, -3, 3, 3), {{{-1, 0},
+                                          {1, 0},
+                                          {1, 0.1},
+                                          {0.05, 0.1},
+                                          {0.05, 1.5},
+                                          {-0.05, 1.5},
+                                          {-0.05, 0.1},
+                                          {-1, 0.1}}});
+  const double eps = 1.5 * env.tolerance();
+  const Vec2 from{0.05 - eps, -0.5}, goal{0.05, 1.0};
+  REQUIRE(env.contains(from));
+  REQUIRE(env.contains(goal));
+  REQUIRE(env.contains(from + 0.6 * (goal - from)));  // the midpoint test alone is fooled
+  CHECK_FALSE(env.segment_inside(from, goal));
+  const Vec2 stop = env.advance(from, goal);
+  CHECK(stop.y == Approx(0.0).margin(1e-9));  // stopped at the crossbar
+  // Past the vertex on the free side, the same segment is in Ω.
+  CHECK(env.segment_inside({0.05 + eps, 0.2}, goal));
+}

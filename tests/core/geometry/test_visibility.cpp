@@ -150,3 +150,44 @@ TEST_CASE("visible length agrees with ray sampling in a cluttered room", "[visib
   }
   CHECK(v.discontinuities.size() % 2 == 0);
 }
+
+TEST_CASE("a viewpoint a rounding error from a vertex sees what rays from it see", "[visibility]") {
+  // Two spikes whose tops lie on one line (as a comb's teeth do), and a box: viewpoints just
+  // past a vertex along an edge's line, where point location may give a triangle that does
+  // not hold the point, must not lose what lies behind that triangle's far edges.
+  Environment env(square(0, 0, 10, 10), {{{2, 2}, {2.5, 6}, {3, 6}, {3.5, 2.5}},
+                                         {{4, 2.5}, {4.5, 6.4}, {5, 6.4}, {5.5, 2}},
+                                         square(7, 7, 8, 8)});
+  const double tol = env.tolerance();
+  std::size_t viewpoints = 0;
+  for (std::size_t h = 0; h < env.hole_count(); ++h) {
+    const std::vector<Vec2>& ring = env.hole(h);
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 v = ring[i], prev = ring[(i + ring.size() - 1) % ring.size()],
+                 next = ring[(i + 1) % ring.size()];
+      for (const Vec2 along : {v - prev, v - next}) {
+        for (const double f : {0.5, 1.1, 1.5, 3.0}) {
+          const Vec2 p = v + (f * tol / norm(along)) * along;
+          if (!env.contains(p)) continue;
+          ++viewpoints;
+          const auto vis = visible_boundary(env, p, INFINITY);
+          for (int k = 0; k < 180; ++k) {
+            const double th = 2 * M_PI * (k + 0.5) / 180;
+            const auto hit = env.ray_cast(p, {std::cos(th), std::sin(th)}, INFINITY);
+            REQUIRE(hit);
+            bool on_piece = false;
+            for (const auto& piece : vis.pieces) {
+              if (norm(project_to_segment(hit->point, piece.a, piece.b).point - hit->point) < 1e-7)
+                on_piece = true;
+            }
+            INFO("viewpoint " << f << " tol past vertex (" << v.x << ", " << v.y << ") along ("
+                              << along.x << ", " << along.y << "), direction " << th << ", hit ("
+                              << hit->point.x << ", " << hit->point.y << ")");
+            CHECK(on_piece);
+          }
+        }
+      }
+    }
+  }
+  CHECK(viewpoints >= 30);
+}
