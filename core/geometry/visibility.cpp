@@ -13,24 +13,33 @@ namespace covsim {
 
 namespace {
 
-// Where the ray p + s * dir meets the line through a and b.
-Vec2 ray_line(Vec2 p, Vec2 dir, Vec2 a, Vec2 b) {
-  const Vec2 s = b - a;
+// Where the ray from p toward mesh vertex q meets edge [a, b]: q itself when it is an end of
+// the edge; else the crossing with the edge's line, kept on the edge. (In exact arithmetic a
+// window's bounds meet its edge within the edge; a ray almost along the edge's line, from a
+// viewpoint a rounding error off that line, would meet it anywhere.)
+Vec2 ray_segment(Vec2 p, Vec2 q, Vec2 a, Vec2 b) {
+  if (q == a || q == b) return q;
+  const Vec2 dir = q - p, s = b - a;
   const double denom = cross(dir, s);
   if (denom == 0.0) return norm2(a - p) < norm2(b - p) ? a : b;
-  return p + (cross(a - p, s) / denom) * dir;
+  const double u = std::clamp(cross(a - p, dir) / denom, 0.0, 1.0);
+  return a + u * s;
 }
 
-// The part of segment [a, b] within distance r of p, if any.
+// The part of segment [a, b] within distance r of p, if any. From the foot of p on the line
+// and the half-chord sqrt((r - h)(r + h)), h the distance to the line, not from the quadratic's
+// discriminant, whose cancellation near tangency (and at r = 0 for p on the segment) would
+// invent a chord of about 1e-8 of the segment's length.
 bool clip_to_disk(Vec2 p, double r, Vec2& a, Vec2& b) {
   if (std::isinf(r)) return true;
   const Vec2 d = b - a;
-  const double A = norm2(d), B = 2.0 * dot(a - p, d), C = norm2(a - p) - r * r;
-  if (A == 0.0) return C <= 0.0;
-  const double disc = B * B - 4.0 * A * C;
-  if (disc < 0.0) return false;
-  const double sq = std::sqrt(disc);
-  const double t0 = std::max(0.0, (-B - sq) / (2.0 * A)), t1 = std::min(1.0, (-B + sq) / (2.0 * A));
+  const double len2 = norm2(d);
+  if (len2 == 0.0) return norm(a - p) <= r;
+  const double foot = dot(p - a, d) / len2;
+  const double h = std::fabs(cross(d, p - a)) / std::sqrt(len2);
+  if (h > r) return false;
+  const double half = std::sqrt((r - h) * (r + h) / len2);
+  const double t0 = std::max(0.0, foot - half), t1 = std::min(1.0, foot + half);
   if (t0 > t1) return false;
   const Vec2 a0 = a;
   a = a0 + t0 * d;
@@ -77,7 +86,7 @@ class Expansion {
       if (orientation(p_, w.right, w.left) <= 0) continue;  // empty window
       const auto& tri = mesh_.triangles[w.triangle];
       const Vec2 a = mesh_.corner(w.triangle, w.edge + 1), b = mesh_.corner(w.triangle, w.edge + 2);
-      Vec2 from = ray_line(p_, w.right - p_, a, b), to = ray_line(p_, w.left - p_, a, b);
+      Vec2 from = ray_segment(p_, w.right, a, b), to = ray_segment(p_, w.left, a, b);
       const std::int32_t n = tri.neighbor[static_cast<std::size_t>(w.edge)];
       if (n == FreeSpaceMesh::kBoundary) {
         const Vec2 mid = 0.5 * (from + to) - p_;

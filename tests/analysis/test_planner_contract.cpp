@@ -116,6 +116,15 @@ TEST_CASE("contract: cases that once failed a long run pass", "[contract]") {
        "a viewpoint 1.8e-8 m past a comb tooth's corner, located in a triangle that did not "
        "hold it: the wall beyond was not sensed and motion to goal stepped into it"},
       {"tangent_bug", 0.5, 93612, "the same at a short range"},
+      {"tangent_bug", 0.0, 3958,
+       "a contact sensor a rounding error off a slanted wall: the sensing disk of radius 0 cut "
+       "a 4.5e-8 m chord of the wall, and the robot swung between its ends for ever"},
+      {"tangent_bug", 0.5, 20808,
+       "following a thin wall, seen edge-on along its own edges: window bounds along an edge's "
+       "line met it anywhere, so phantom pieces of the followed wall (up to 0.39 m past its "
+       "ends) kept d_followed too low to leave, and a loop closed round it"},
+      {"tangent_bug", 2.0, 59217, "the same: a path past its envelope"},
+      {"tangent_bug", 2.0, 82207, "the same: a phantom piece across the way, a stall"},
       {"tangent_bug", INFINITY, 16796,
        "a leave segment to a reach point on a shadow ray, beyond the old path bound"},
       {"tangent_bug", INFINITY, 86500, "the same"},

@@ -73,7 +73,7 @@ const Variant kVariants[] = {
     {"bilinear raster density", "u_shape.json",
      R"({"density": {"type": "raster", "file": "RASTER", "extent": [[0, 0], [1, 1]],
          "interpolation": "bilinear"}})",
-     "765107a89ffc2ba6"},
+     "c9943028552473b2"},
     {"office, decentralized under loss, periodic", "office.json",
      R"({"network": {"loss": {"model": "bernoulli", "p": 0.1}},
          "loops": {"mode": "periodic", "loop1_period": 1.0}, "convergence": {"max_time": 40}})",

@@ -166,11 +166,19 @@ TEST_CASE("a viewpoint a rounding error from a vertex sees what rays from it see
       const Vec2 v = ring[i], prev = ring[(i + ring.size() - 1) % ring.size()],
                  next = ring[(i + 1) % ring.size()];
       for (const Vec2 along : {v - prev, v - next}) {
-        for (const double f : {0.5, 1.1, 1.5, 3.0}) {
-          const Vec2 p = v + (f * tol / norm(along)) * along;
+        // A rounding error past the vertex, and farther out on the edge's line, where the
+        // edge is seen exactly edge-on.
+        for (const double past : {0.5 * tol, 1.1 * tol, 1.5 * tol, 3.0 * tol, 0.05, 0.3}) {
+          const Vec2 p = v + (past / norm(along)) * along;
           if (!env.contains(p)) continue;
           ++viewpoints;
           const auto vis = visible_boundary(env, p, INFINITY);
+          for (const auto& piece : vis.pieces) {
+            const BoundaryEdge& e = env.boundary()[piece.edge];
+            INFO("viewpoint (" << p.x << ", " << p.y << "), piece of edge " << piece.edge);
+            CHECK(distance(project_to_segment(piece.a, e.a, e.b).point, piece.a) <= 1e-9);
+            CHECK(distance(project_to_segment(piece.b, e.a, e.b).point, piece.b) <= 1e-9);
+          }
           for (int k = 0; k < 180; ++k) {
             const double th = 2 * M_PI * (k + 0.5) / 180;
             const auto hit = env.ray_cast(p, {std::cos(th), std::sin(th)}, INFINITY);
@@ -180,7 +188,7 @@ TEST_CASE("a viewpoint a rounding error from a vertex sees what rays from it see
               if (norm(project_to_segment(hit->point, piece.a, piece.b).point - hit->point) < 1e-7)
                 on_piece = true;
             }
-            INFO("viewpoint " << f << " tol past vertex (" << v.x << ", " << v.y << ") along ("
+            INFO("viewpoint " << past << " m past vertex (" << v.x << ", " << v.y << ") along ("
                               << along.x << ", " << along.y << "), direction " << th << ", hit ("
                               << hit->point.x << ", " << hit->point.y << ")");
             CHECK(on_piece);
@@ -189,5 +197,22 @@ TEST_CASE("a viewpoint a rounding error from a vertex sees what rays from it see
       }
     }
   }
-  CHECK(viewpoints >= 30);
+  CHECK(viewpoints >= 50);
+}
+
+TEST_CASE("a range of 0 senses no wall length, even a rounding error off a wall", "[visibility]") {
+  // Points computed on slanted walls lie a rounding error off them; the sensing disk of
+  // radius 0 must not cut a chord of the wall there.
+  Environment env(square(0, 0, 10, 10), {{{2, 2}, {2.5, 6}, {3, 6}, {3.5, 2.5}}});
+  std::size_t points = 0;
+  for (const BoundaryEdge& e : env.boundary()) {
+    for (double t = 0.05; t < 1.0; t += 0.1) {
+      const Vec2 p = e.a + t * (e.b - e.a);
+      if (!env.contains(p)) continue;
+      ++points;
+      for (const auto& piece : visible_boundary(env, p, 0.0).pieces)
+        CHECK(distance(piece.a, piece.b) <= env.tolerance());
+    }
+  }
+  CHECK(points >= 60);
 }
