@@ -44,8 +44,19 @@ class Registry {
     if (e.name.empty()) throw std::invalid_argument(kind_ + ": a component needs a name");
     if (find(e.name) != nullptr)
       throw std::invalid_argument(fmt::format("{} \"{}\" is registered already", kind_, e.name));
-    if (!e.make) throw std::invalid_argument(fmt::format("{} \"{}\" has no factory", kind_, e.name));
+    if (!e.make)
+      throw std::invalid_argument(fmt::format("{} \"{}\" has no factory", kind_, e.name));
     entries_.push_back(std::move(e));
+  }
+  // Takes a component out (a Python-defined one when its interpreter ends); false if absent.
+  bool remove(std::string_view name) {
+    for (auto it = entries_.begin(); it != entries_.end(); ++it) {
+      if (it->name == name) {
+        entries_.erase(it);
+        return true;
+      }
+    }
+    return false;
   }
   const Entry* find(std::string_view name) const {
     for (const Entry& e : entries_) {

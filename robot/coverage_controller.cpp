@@ -113,6 +113,12 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
   if (!is_settled(r.status)) {
     // Algorithm 2, line 5: a planner step toward the real target, in the real world.
     const PlanStep s = r.planner->step(sensor_->reading(i, r.position), step_);
+    // A robot moves at most its step length per planner step, whatever the planner asks.
+    if (!(distance(r.position, s.next) <= step_ * (1.0 + 1e-9))) {
+      throw std::runtime_error(fmt::format(
+          "robot {}'s planner {} proposed a step of {} m at t={} s; the step length is {} m", i,
+          r.planner->name(), distance(r.position, s.next), k.now().seconds(), step_));
+    }
     const Vec2 next = env_.advance(r.position, s.next);
     if (!env_.segment_inside(r.position, next)) {
       throw std::logic_error(

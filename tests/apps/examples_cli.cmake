@@ -2,6 +2,7 @@
 # through both routes: their own program (linking covsim::covsim, registering the component,
 # running the planner contract suite or a sweep) and the installed covsim with --plugin.
 #   -DBUILD=<covsim build dir> -DSOURCE=<covsim source> -DWORK=<scratch> -DCXX=<compiler>
+#   [-DPYTHON=<interpreter> -DPYTHON_SITE=<where the package installs, under the prefix>]
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(prefix ${WORK}/prefix)
@@ -75,5 +76,25 @@ execute_process(COMMAND ${prefix}/bin/covsim run ${WORK}/u_bug2.json --out ${WOR
                 RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "\\$.planner.type: expected one of")
   message(FATAL_ERROR "a scenario naming an unloaded plugin's planner: ${rc}: ${err}")
+endif()
+
+# The installed Python package: where the system Python looks under the prefix, it runs the
+# U-shaped scenario to the installed program's fingerprint.
+if(PYTHON)
+  if(NOT EXISTS ${prefix}/${PYTHON_SITE}/covsim/__init__.py)
+    message(FATAL_ERROR "the installation lacks the Python package in ${PYTHON_SITE}")
+  endif()
+  run("covsim run" ${prefix}/bin/covsim run ${SOURCE}/scenarios/u_shape.json --out ${WORK}/run-u)
+  file(READ ${WORK}/run-u/final.json final)
+  string(REGEX MATCH "\"fingerprint\": \"([0-9a-f]+)\"" _ "${final}")
+  set(expected ${CMAKE_MATCH_1})
+  file(WRITE ${WORK}/probe.py "import covsim\nprint(covsim.__file__)\n"
+       "s = covsim.Scenario.from_file('${SOURCE}/scenarios/u_shape.json')\n"
+       "print(covsim.Simulation(s).run()['fingerprint'])\n")
+  run("the installed Python package" ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_SITE}
+      ${PYTHON} ${WORK}/probe.py)
+  if(NOT out MATCHES "^${prefix}/${PYTHON_SITE}/covsim/__init__.py\n${expected}\n$")
+    message(FATAL_ERROR "the installed Python package: ${out} (want fingerprint ${expected})")
+  endif()
 endif()
 message(STATUS "examples built and ran against the installed covsim")

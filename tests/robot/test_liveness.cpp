@@ -145,6 +145,28 @@ TEST_CASE("a planner that declares a goal in Ω unreachable stops the run as a p
 }
 
 namespace {
+// Goes straight to its goal in one step, however far: faster than any robot.
+class Jumps final : public Planner {
+ public:
+  std::string_view name() const override { return "jumps"; }
+  void set_goal(Vec2 g) override { goal_ = g; }
+  PlanStep step(const SensorReading&, double) override { return {goal_, PlanStatus::reached}; }
+
+ private:
+  Vec2 goal_;
+};
+}  // namespace
+
+TEST_CASE("a planner that proposes a step longer than the step length stops the run",
+          "[liveness]") {
+  Scenario s = paper("two_obstacles.json");
+  CHECK_THROWS_WITH(
+      run_coverage(s, nullptr, nullptr, [](std::uint32_t) { return std::make_unique<Jumps>(); }),
+      Catch::Matchers::Contains("planner jumps proposed a step of") &&
+          Catch::Matchers::Contains("the step length is"));
+}
+
+namespace {
 // Records every robot's virtual generator and virtual target at each motion step.
 struct GeneratorLog final : CoverageObserver {
   std::map<std::int64_t, std::map<std::uint32_t, std::pair<Vec2, Vec2>>> at;

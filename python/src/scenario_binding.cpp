@@ -1,0 +1,93 @@
+// covsim.Scenario: a scenario read and validated exactly as `covsim run` reads it, from a file
+// or a dict, and changed by dotted path as sweeps change it.
+#include "scenario_binding.hpp"
+
+#include <pybind11/stl/filesystem.h>
+
+#include "analysis/sweep_spec.hpp"
+#include "scenarios/json_reader.hpp"
+
+namespace covsim::python {
+
+nlohmann::json to_json(const py::handle& o) {
+  const py::module_ json = py::module_::import("json");
+  return nlohmann::json::parse(
+      json.attr("dumps")(o, py::arg("allow_nan") = false).cast<std::string>());
+}
+
+py::object to_python(const nlohmann::json& j) {
+  return py::module_::import("json").attr("loads")(j.dump());
+}
+
+py::object to_python(const nlohmann::ordered_json& j) {
+  return py::module_::import("json").attr("loads")(j.dump());
+}
+
+PyScenario PyScenario::from_file(const std::filesystem::path& path) {
+  PyScenario s;
+  s.json = read_json_file(path);
+  s.base_dir = path.parent_path();
+  s.parsed = parse_scenario(s.json, path.string(), s.base_dir);
+  return s;
+}
+
+PyScenario PyScenario::from_json(nlohmann::json j, const std::string& source,
+                                 const std::filesystem::path& base_dir) {
+  PyScenario s;
+  s.json = std::move(j);
+  s.base_dir = base_dir;
+  s.parsed = parse_scenario(s.json, source, base_dir);
+  return s;
+}
+
+void PyScenario::set(const std::string& path, const nlohmann::json& value) {
+  nlohmann::json j = json;
+  set_dotted(j, path, value);
+  parsed = parse_scenario(j, parsed.source, base_dir);  // validated, or nothing changes
+  json = std::move(j);
+}
+
+void bind_scenario(py::module_& m) {
+  py::class_<PyScenario>(m, "Scenario",
+                         "A scenario, validated as `covsim run` validates it "
+                         "(docs/scenario-format.md).")
+      .def_static("from_file", &PyScenario::from_file, py::arg("path"),
+                  "Reads a scenario file; files it names are relative to it.")
+      .def_static(
+          "from_dict",
+          [](const py::dict& d, const std::filesystem::path& base_dir) {
+            return PyScenario::from_json(to_json(d), "<dict>", base_dir);
+          },
+          py::arg("scenario"), py::arg("base_dir") = ".",
+          "A scenario from a dict (as its JSON would read); files it names are relative to "
+          "base_dir.")
+      .def(
+          "set",
+          [](PyScenario& s, const std::string& path, const py::object& value) -> PyScenario& {
+            s.set(path, to_json(value));
+            return s;
+          },
+          py::arg("path"), py::arg("value"),
+          "Sets a dotted path ('network.loss.p') to a JSON value, as a sweep does, and "
+          "validates the result (raising ScenarioError, with nothing changed, if it is invalid). "
+          "Returns the scenario.")
+      .def("copy", [](const PyScenario& s) { return s; })
+      .def(
+          "to_dict", [](const PyScenario& s) { return to_python(s.json); },
+          "The scenario's JSON as given (defaults not filled in).")
+      .def_property_readonly("source", [](const PyScenario& s) { return s.parsed.source; })
+      .def_property_readonly(
+          "robots", [](const PyScenario& s) { return to_array(s.parsed.robot_positions); },
+          "Start positions, an (n, 2) array [m].")
+      .def_property_readonly("seed",
+                             [](const PyScenario& s) -> py::object {
+                               if (!s.parsed.seed) return py::none();
+                               return py::int_(*s.parsed.seed);
+                             })
+      .def("__repr__", [](const PyScenario& s) {
+        return "<covsim.Scenario " + s.parsed.source + ", " +
+               std::to_string(s.parsed.robot_positions.size()) + " robots>";
+      });
+}
+
+}  // namespace covsim::python

@@ -1,0 +1,46 @@
+// The sweep runner and the run-folder reader's C++ halves; python/covsim/__init__.py wraps
+// them (pandas DataFrames, numpy arrays).
+#include <pybind11/stl.h>
+
+#include "analysis/result_fields.hpp"
+#include "analysis/sweep_runner.hpp"
+#include "scenario_binding.hpp"
+
+namespace covsim::python {
+
+void bind_sweep(py::module_& m) {
+  m.def(
+      "_sweep",
+      [](const std::string& file, const std::string& out, std::size_t jobs) {
+        const SweepSpec spec = load_sweep(file);
+        std::vector<SweepResult> results;
+        {
+          py::gil_scoped_release release;
+          results = run_sweep(spec, out, SweepOptions{std::max<std::size_t>(1, jobs), false, 0, 1});
+          write_runs_csv(std::filesystem::path(out) / "runs.csv", spec, results);
+          write_summary_csv(std::filesystem::path(out) / "summary.csv", spec, results);
+        }
+        // The rows of runs.csv, as dicts with typed values.
+        const std::vector<SweepRun> runs = spec.runs();
+        py::list rows;
+        for (const SweepResult& r : results) {
+          const SweepRun& run = runs.at(r.index);
+          py::dict row;
+          row["run"] = r.index;
+          row["setting"] = run.setting;
+          for (std::size_t p = 0; p < spec.parameters.size(); ++p)
+            row[spec.parameters[p].c_str()] = to_python(run.values[p]);
+          row["seed"] = run.seed;
+          for (const auto& f : run_fields()) {
+            const auto it = r.values.find(f.name);
+            row[f.name.c_str()] = it == r.values.end() ? py::none() : to_python(*it);
+          }
+          row["error"] = r.error ? py::cast(*r.error) : py::none();
+          rows.append(row);
+        }
+        return rows;
+      },
+      py::arg("file"), py::arg("out"), py::arg("jobs"));
+}
+
+}  // namespace covsim::python

@@ -1,0 +1,105 @@
+import numpy as np
+import pytest
+
+import covsim
+
+
+class Straight:
+    """A planner in Python: straight at the goal, stalling at the first wall it touches."""
+
+    def __init__(self, environment, params):
+        self.environment = environment
+        self.goal = None
+
+    def set_goal(self, goal):
+        self.goal = np.array(goal)
+
+    def step(self, reading, max_step):
+        x = reading.position
+        d = np.linalg.norm(self.goal - x)
+        if d <= 1e-9:
+            return self.goal, "reached"
+        nxt = self.goal if d <= max_step else x + max_step * (self.goal - x) / d
+        if not self.environment.segment_inside(x, nxt):
+            return x, "stalled"
+        return nxt, "moving"
+
+
+class Lloyd:
+    """A coverage law in Python: the paper's, via the cell covsim computes."""
+
+    def __init__(self, environment, params):
+        self.gain = params["gain"]
+
+    def target(self, robot, knowledge):
+        g = knowledge.points[knowledge.self]
+        return g + self.gain * (knowledge.own_cell()["centroid"] - g)
+
+
+covsim.register_planner("py_straight", Straight, "straight line, in Python")
+covsim.register_law("py_lloyd", Lloyd, "Lloyd on virtual generators, in Python",
+                    params={"gain": 1.0})
+
+
+def test_python_components_are_registered_beside_the_builtin_ones():
+    assert "py_straight" in [p["name"] for p in covsim.components("planners")]
+    law = [l for l in covsim.components("laws") if l["name"] == "py_lloyd"][0]
+    assert law["params"][0]["name"] == "gain" and law["params"][0]["default"] == "1"
+    with pytest.raises(ValueError, match="registered already"):
+        covsim.register_planner("py_straight", Straight)
+
+
+def test_a_python_law_reproduces_the_paper_law_bit_for_bit(scenarios):
+    s = covsim.Scenario.from_file(scenarios / "u_shape.json")
+    builtin = covsim.Simulation(s).run()
+    s.set("controller", {"type": "py_lloyd"})
+    python = covsim.Simulation(s).run()
+    assert python["stop_reason"] == "converged"
+    assert python["fingerprint"] == builtin["fingerprint"]
+    s.set("controller", {"type": "py_lloyd", "gain": 0.5})
+    damped = covsim.Simulation(s).run()
+    assert damped["converged"]
+    assert damped["fingerprint"] != builtin["fingerprint"]
+
+
+ROOM = {"environment": {"outer": [[0, 0], [2, 0], [2, 1], [0, 1]]},
+        "density": {"type": "gaussian_mixture", "floor": 0.2,
+                    "components": [{"mean": [1.5, 0.5], "sigma": 0.4, "weight": 1.0}]},
+        "robots": {"positions": [[0.1, 0.1], [0.2, 0.1], [0.1, 0.2]]}, "seed": 1}
+
+
+def test_a_python_planner_drives_a_run_to_convergence():
+    # A convex room, where going straight always works.
+    s = covsim.Scenario.from_dict(ROOM)
+    s.set("planner", {"type": "py_straight"})
+    sim = covsim.Simulation(s)
+    out = sim.run()
+    assert out["converged"]
+    assert sim.planner_state()[0]["planner"] == "py_straight"
+    # Deterministic: the same run twice.
+    assert covsim.Simulation(s).run()["fingerprint"] == out["fingerprint"]
+
+
+def test_a_python_planner_that_breaks_its_contract_fails_loudly(scenarios):
+    class Liar(Straight):
+        def step(self, reading, max_step):
+            return reading.position, "teleported"
+
+    covsim.register_planner("py_liar", Liar)
+    s = covsim.Scenario.from_file(scenarios / "l_shape.json")
+    s.set("planner", {"type": "py_liar"})
+    with pytest.raises(ValueError, match="moving, reached, projected or stalled"):
+        covsim.Simulation(s).run()
+
+
+def test_a_python_planner_that_jumps_stops_the_run(scenarios):
+    class Jumper(Straight):
+        def step(self, reading, max_step):
+            return self.goal, "moving"  # straight to the goal, however far
+
+    covsim.register_planner("py_jumper", Jumper)
+    s = covsim.Scenario.from_dict(ROOM)
+    s.set("planner", {"type": "py_jumper"})
+    with pytest.raises(RuntimeError, match="planner py_jumper proposed a step of .* the step "
+                                           "length is"):
+        covsim.Simulation(s).run()

@@ -1,0 +1,42 @@
+import csv
+import json
+
+import numpy as np
+import pandas
+
+import covsim
+
+
+def test_sweep_rows_equal_runs_csv(scenarios, tmp_path):
+    spec = {"scenario": str(scenarios / "two_obstacles.json"),
+            "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.0, 0.4]},
+            "seeds": [3, 4]}
+    rows = covsim.sweep(spec, jobs=2, out=tmp_path / "sw")
+    assert isinstance(rows, pandas.DataFrame)
+    assert len(rows) == 4
+    with open(tmp_path / "sw" / "runs.csv", newline="") as f:
+        table = list(csv.DictReader(f))
+    assert list(rows.columns) == list(table[0].keys())
+    for (_, row), line in zip(rows.iterrows(), table):
+        assert row["fingerprint"] == line["fingerprint"]
+        assert row["sim_time"] == float(line["sim_time"])
+        assert int(row["converged"]) == int(line["converged"])
+    # Results do not depend on the number of threads.
+    one = covsim.sweep(spec, jobs=1)
+    assert list(one["fingerprint"]) == list(rows["fingerprint"])
+
+
+def test_load_run_reads_a_run_folder_into_arrays(scenarios, cli, tmp_path):
+    cli("run", scenarios / "u_shape.json", "--out", tmp_path / "run")
+    run = covsim.load_run(tmp_path / "run")
+    final = json.loads((tmp_path / "run" / "final.json").read_text())
+    assert run.final == final
+    assert run.robots == 5
+    assert run.trajectory["t"].dtype == np.float64
+    assert run.trajectory["robot"].dtype == np.int64
+    path = run.path(0)
+    assert path.shape[1] == 2
+    assert list(path[0]) == run.scenario["robots"]["positions"][0]
+    assert list(path[-1]) == final["robots"][0]["position"]
+    assert run.metrics["t"][-1] == final["sim_time"]
+    assert run.metrics["cost_real"][-1] == final["cost"]["real"]
