@@ -2,6 +2,8 @@
 // One run of the paper's controller on a scenario, from start to convergence (or the time
 // limit), and what it ends with: the final positions, the three costs of the paper's
 // Remark 1, and the fingerprint.
+#include <nlohmann/json.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -55,6 +57,8 @@ struct CoverageOutcome {
   // wall times that vary between runs.
   double planner_seconds = 0.0;
   std::uint64_t planner_steps = 0;
+  // What built the covsim that ran it (analysis/provenance.hpp).
+  nlohmann::ordered_json provenance;
   // Mean wall-clock microseconds per planner step (0 without steps).
   double planner_step_time_us() const {
     return planner_steps > 0 ? 1e6 * planner_seconds / static_cast<double>(planner_steps) : 0.0;

@@ -111,8 +111,8 @@ std::string scene_svg(const Scenario& scenario, const CoverageOutcome& outcome,
 }
 
 std::string cost_svg(const std::vector<MetricsSample>& samples) {
-  ChartSeries real{"real generators", {}, false, false},
-      virt{"virtual generators", {}, false, true};
+  ChartSeries real{"real generators", {}, false, false, {}},
+      virt{"virtual generators", {}, false, true, {}};
   for (const MetricsSample& s : samples) {
     real.points.push_back({s.t, s.cost_real});
     virt.points.push_back({s.t, s.cost_virtual});

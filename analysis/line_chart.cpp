@@ -37,6 +37,13 @@ std::string line_chart_svg(const std::string& title, const std::string& x_label,
       y0 = std::min({y0, p.y, s.band ? p.lo : p.y});
       y1 = std::max({y1, p.y, s.band ? p.hi : p.y});
     }
+    for (const auto& [x, y] : s.samples) {
+      if (!std::isfinite(x) || !std::isfinite(y)) continue;
+      x0 = std::min(x0, x);
+      x1 = std::max(x1, x);
+      y0 = std::min(y0, y);
+      y1 = std::max(y1, y);
+    }
   }
   if (!std::isfinite(x0)) x0 = 0, x1 = 1;
   if (!(x1 > x0)) x1 = x0 + 1;
@@ -86,6 +93,12 @@ std::string line_chart_svg(const std::string& title, const std::string& x_label,
       out += fmt::format(
           "<polygon points=\"{}\" fill=\"{}\" fill-opacity=\"0.18\" stroke=\"none\"/>\n", band,
           colour);
+    }
+    for (const auto& [x, y] : s.samples) {
+      if (!std::isfinite(x) || !std::isfinite(y)) continue;
+      out += fmt::format(
+          "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2\" fill=\"{}\" fill-opacity=\"0.25\"/>\n", X(x),
+          Y(y), colour);
     }
     std::string pts;
     for (const ChartPoint& p : s.points)

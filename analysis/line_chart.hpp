@@ -1,6 +1,7 @@
 #pragma once
 // A line chart as SVG: series of (x, y) with an optional band [lo, hi] around each line.
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace covsim {
@@ -14,6 +15,8 @@ struct ChartSeries {
   std::vector<ChartPoint> points;
   bool band = false;
   bool dashed = false;
+  // Individual observations (one per run), drawn as faint dots under the line.
+  std::vector<std::pair<double, double>> samples;
 };
 
 std::string line_chart_svg(const std::string& title, const std::string& x_label,

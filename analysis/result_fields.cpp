@@ -172,6 +172,10 @@ const FieldTable<CoverageOutcome>& final_fields() {
                }},
       member("events", FieldKind::integer, "", "events dispatched", &O::events),
       member("seed", FieldKind::integer, "", "the run's seed", &O::seed),
+      Field<O>{"provenance", FieldKind::json, "",
+               "what built covsim: version, commit, dirty, compiler, build_type, flags",
+               [](const O& o) { return json(o.provenance); },
+               [](O& o, const nlohmann::json& j) { o.provenance = j; }},
   };
   return t;
 }
@@ -238,6 +242,17 @@ const FieldTable<RunMeasures>& run_fields() {
                     nullptr,
                     summarized};
   };
+  // A communication measure of the run (analysis/metrics_sampler.hpp), summarised.
+  const auto c = [](std::string name, std::string unit, std::string description,
+                    double CommunicationSummary::*m) {
+    return Field<M>{std::move(name),
+                    FieldKind::number,
+                    std::move(unit),
+                    std::move(description),
+                    [m](const M& r) { return json(r.communication.*m); },
+                    nullptr,
+                    true};
+  };
   using O = CoverageOutcome;
   static const FieldTable<M> t{
       f(
@@ -272,8 +287,29 @@ const FieldTable<RunMeasures>& run_fields() {
           "messages_sent", FieldKind::integer, "", "link transmissions",
           [](const O& o) { return json(o.network.sent); }, false),
       f(
+          "messages_delivered", FieldKind::integer, "", "messages delivered",
+          [](const O& o) { return json(o.network.delivered); }, true),
+      f(
           "messages_lost", FieldKind::integer, "", "messages lost by the loss model",
           [](const O& o) { return json(o.network.lost); }, true),
+      f(
+          "messages_unreachable", FieldKind::integer, "",
+          "transmissions out of range or blocked by walls",
+          [](const O& o) { return json(o.network.unreachable); }, true),
+      c("info_age_mean", "s", "mean age of neighbour-table entries, over the samples",
+        &CommunicationSummary::info_age_mean),
+      c("info_age_max", "s", "largest age of a neighbour-table entry",
+        &CommunicationSummary::info_age_max),
+      c("area_claimed_by_none", "m²",
+        "mean area of Ω in no robot's own cell (cells from each robot's table), over the samples",
+        &CommunicationSummary::area_claimed_by_none),
+      c("area_claimed_by_several", "m²", "mean area of Ω in two or more robots' own cells",
+        &CommunicationSummary::area_claimed_by_several),
+      c("connected_fraction", "",
+        "fraction of the samples at which the communication graph was connected",
+        &CommunicationSummary::connected_fraction),
+      c("algebraic_connectivity_min", "", "least algebraic connectivity of the communication graph",
+        &CommunicationSummary::algebraic_connectivity_min),
       f(
           "events", FieldKind::integer, "", "events dispatched",
           [](const O& o) { return json(o.events); }, false),

@@ -6,6 +6,7 @@
 #include "analysis/coverage_run.hpp"
 #include "analysis/field_table.hpp"
 #include "analysis/metrics_sample.hpp"
+#include "analysis/metrics_sampler.hpp"
 
 namespace covsim {
 
@@ -16,6 +17,7 @@ const FieldTable<MetricsSample>& metrics_fields();
 // What one run of a sweep records: its outcome and the wall-clock seconds it took.
 struct RunMeasures {
   CoverageOutcome outcome;
+  CommunicationSummary communication;
   double wall_time = 0.0;
 };
 const FieldTable<RunMeasures>& run_fields();

@@ -31,27 +31,18 @@ void RunRecorder::on_motion(SimTime t, const Robot& r) {
 }
 
 void RunRecorder::on_sample(SimTime t, const CoverageController& controller) {
-  if (!network_) network_ = std::make_unique<NetworkMetrics>(controller.environment());
-  MetricsSample s;
-  s.t = t.seconds();
-  const VoronoiPartition& vp = controller.virtual_partition();
-  s.cost_virtual = vp.cost();
-  s.cost_real_in_virtual_partition = vp.cost(controller.positions());
-  s.cost_real = controller.real_partition().cost();
-  for (const Robot& r : controller.robots()) {
-    s.settled += is_settled(r.status) ? 1 : 0;
-    s.projected += r.projected ? 1 : 0;
-    s.path_length += r.path_length;
-  }
-  s.messages = controller.network_totals();
-  s.network = network_->sample(controller);
-  metrics_buffer_ += csv_row(metrics_fields(), s) + "\n";
-  samples_.push_back(s);
+  sampler_.on_sample(t, controller);
+  metrics_buffer_ += csv_row(metrics_fields(), sampler_.samples().back()) + "\n";
   flush(false);
 }
 
 void RunRecorder::on_finish(SimTime t, const CoverageController& c) {
-  if (samples_.empty() || samples_.back().t < t.seconds()) on_sample(t, c);
+  const std::size_t before = sampler_.samples().size();
+  sampler_.on_finish(t, c);
+  if (sampler_.samples().size() > before) {
+    metrics_buffer_ += csv_row(metrics_fields(), sampler_.samples().back()) + "\n";
+    flush(false);
+  }
 }
 
 void RunRecorder::flush(bool force) {

@@ -7,10 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <memory>
-
-#include "analysis/metrics_sample.hpp"
-#include "analysis/network_metrics.hpp"
+#include "analysis/metrics_sampler.hpp"
 #include "core/atomic_file.hpp"
 #include "robot/coverage_controller.hpp"
 
@@ -28,15 +25,14 @@ class RunRecorder final : public CoverageObserver {
 
   const std::vector<std::vector<Vec2>>& real_paths() const { return real_; }
   const std::vector<std::vector<Vec2>>& virtual_paths() const { return virtual_; }
-  const std::vector<MetricsSample>& samples() const { return samples_; }
+  const std::vector<MetricsSample>& samples() const { return sampler_.samples(); }
 
  private:
   void flush(bool force);
   AtomicFile trajectory_, metrics_;
   std::string trajectory_buffer_, metrics_buffer_;
   std::vector<std::vector<Vec2>> real_, virtual_;
-  std::vector<MetricsSample> samples_;
-  std::unique_ptr<NetworkMetrics> network_;  // built at the first sample
+  MetricsSampler sampler_;
 };
 
 }  // namespace covsim

@@ -1,5 +1,7 @@
 #include "analysis/simulation.hpp"
 
+#include "analysis/provenance.hpp"
+
 #include <algorithm>
 
 #include "core/trace.hpp"
@@ -35,7 +37,7 @@ class Simulation::Observers final : public CoverageObserver {
 Simulation::Simulation(const Scenario& scenario, std::optional<std::uint64_t> seed,
                        const PlannerMaker& make_planner, TraceSink* trace)
     : scenario_(scenario), observers_(std::make_unique<Observers>()) {
-  if (seed) scenario_.seed = seed;
+  if (seed) scenario_ = with_seed(scenario_, *seed);  // redraws what the seed draws
   if (scenario_.robot_positions.empty()) {
     throw ScenarioError(scenario_.source +
                         ": $: missing required key \"robots\" (a run needs robots)");
@@ -114,6 +116,7 @@ CoverageOutcome Simulation::outcome() const {
   const CoverageController& c = *controller_;
   CoverageOutcome out;
   out.scenario = scenario_.source;
+  out.provenance = this_build();
   out.converged = c.converged();
   out.sim_time = kernel_->now();
   out.planner_failure = c.planner_failure();

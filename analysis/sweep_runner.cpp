@@ -15,10 +15,12 @@
 
 #include "analysis/coverage_run.hpp"
 #include "analysis/line_chart.hpp"
+#include "analysis/provenance.hpp"
 #include "analysis/result_fields.hpp"
 #include "analysis/statistics.hpp"
 #include "core/atomic_file.hpp"
 #include "core/fingerprint.hpp"
+#include "scenarios/scenario_description.hpp"
 
 namespace covsim {
 
@@ -55,7 +57,10 @@ std::optional<SweepResult> from_json(const fs::path& file) {
   }
 }
 
-SweepResult execute(const SweepSpec& spec, const SweepRun& run) {
+// One run, sampled for its communication measures; with keep_series its samples are kept as
+// DIR/runs/<index>.metrics.csv.
+SweepResult execute(const SweepSpec& spec, const SweepRun& run, const fs::path& dir,
+                    bool keep_series) {
   SweepResult r;
   r.index = run.index;
   const auto start = std::chrono::steady_clock::now();
@@ -64,7 +69,16 @@ SweepResult execute(const SweepSpec& spec, const SweepRun& run) {
     const Scenario s =
         parse_scenario(spec.scenario_for(run), fmt::format("{} (run {})", spec.source, run.index),
                        spec.scenario_dir);
-    m.outcome = run_coverage(s);
+    MetricsSampler sampler;
+    m.outcome = run_coverage(s, &sampler);
+    m.communication = summarize_communication(sampler.samples());
+    if (keep_series) {
+      AtomicFile series(dir / "runs" / fmt::format("{}.metrics.csv", run.index));
+      series.stream() << csv_header(metrics_fields()) << '\n';
+      for (const MetricsSample& sample : sampler.samples())
+        series.stream() << csv_row(metrics_fields(), sample) << '\n';
+      series.commit();
+    }
   } catch (const std::exception& e) {
     r.error = e.what();
   }
@@ -76,6 +90,24 @@ SweepResult execute(const SweepSpec& spec, const SweepRun& run) {
     r.values["wall_time"] = m.wall_time;
   }
   return r;
+}
+
+std::string run_field_unit(const std::string& name) {
+  for (const auto& f : run_fields()) {
+    if (f.name == name) return f.unit;
+  }
+  return "";
+}
+
+// A sweep folder continued by a build other than the one that started it: its runs.csv will
+// mix results of both.
+void warn_builds(const std::string& what, const nlohmann::json& recorded) {
+  const std::vector<std::string> diffs = build_differences(recorded);
+  if (diffs.empty()) return;
+  fmt::print(stderr, "covsim: warning: {} by a different build; its results will mix builds:\n",
+             what);
+  for (const std::string& d : diffs)
+    fmt::print(stderr, "  {}\n", d);
 }
 
 std::string csv_value(const nlohmann::json& v) {
@@ -114,7 +146,8 @@ std::vector<std::string> sweep_metrics() {
 std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
                                    const SweepOptions& options) {
   fs::create_directories(dir / "runs");
-  // The folder remembers its sweep, so a resume cannot mix two sweeps' results.
+  // The folder remembers its sweep, so a resume cannot mix two sweeps' results, and the
+  // build that started it, so that a resume by another build says so.
   const nlohmann::json resolved = to_json(spec);
   if (std::ifstream in(dir / "sweep.json"); in) {
     nlohmann::json held;
@@ -122,13 +155,20 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
       held = nlohmann::json::parse(in);
     } catch (const nlohmann::json::parse_error&) {
     }
+    const nlohmann::json held_build = held.is_object() && held.contains("provenance")
+                                          ? held.at("provenance")
+                                          : nlohmann::json::object();
+    if (held.is_object()) held.erase("provenance");
     if (held != resolved) {
       throw std::runtime_error(dir.string() +
                                " holds results of a different sweep; use another output folder");
     }
+    warn_builds(dir.string() + " was started", held_build);
   } else {
+    nlohmann::json with_build = resolved;
+    with_build["provenance"] = this_build();
     AtomicFile f(dir / "sweep.json");
-    f.stream() << resolved.dump() << '\n';
+    f.stream() << with_build.dump() << '\n';
     f.commit();
   }
   std::vector<SweepRun> all = spec.runs();
@@ -170,7 +210,7 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
   auto worker = [&] {
     for (std::size_t t = next++; t < todo.size(); t = next++) {
       const std::size_t k = todo[t];
-      SweepResult r = execute(spec, mine[k]);
+      SweepResult r = execute(spec, mine[k], dir, options.keep_series);
       AtomicFile f(dir / "runs" / fmt::format("{}.json", r.index));
       f.stream() << to_json(r).dump() << '\n';
       f.commit();
@@ -194,7 +234,7 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
 std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const fs::path& out,
                                       SweepSpec& merged) {
   if (dirs.empty()) throw std::runtime_error("nothing to merge");
-  nlohmann::json resolved;
+  nlohmann::json resolved, first_build;
   for (const fs::path& d : dirs) {
     std::ifstream in(d / "sweep.json");
     if (!in) throw std::runtime_error(d.string() + ": not a sweep folder (no sweep.json)");
@@ -204,10 +244,25 @@ std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const f
     } catch (const nlohmann::json::parse_error& e) {
       throw std::runtime_error(d.string() + "/sweep.json: " + e.what());
     }
-    if (resolved.is_null()) resolved = j;
+    const nlohmann::json build =
+        j.is_object() && j.contains("provenance") ? j.at("provenance") : nlohmann::json::object();
+    if (j.is_object()) j.erase("provenance");
+    if (resolved.is_null()) {
+      resolved = j;
+      first_build = build;
+    }
     if (j != resolved)
       throw std::runtime_error(d.string() + " holds a different sweep from " +
                                dirs.front().string());
+    if (build != first_build) {
+      fmt::print(stderr, "covsim: warning: {} and {} were run by different builds:\n",
+                 dirs.front().string(), d.string());
+      for (const auto& [key, value] : first_build.items()) {
+        if (!build.contains(key) || build.at(key) != value)
+          fmt::print(stderr, "  {}: {} and {}\n", key, value.dump(),
+                     build.contains(key) ? build.at(key).dump() : "unknown");
+      }
+    }
   }
   merged = sweep_from_json(resolved);
   const std::size_t total = merged.runs().size();
@@ -236,8 +291,20 @@ std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const f
     f.stream() << to_json(r).dump() << '\n';
     f.commit();
   }
+  // Series kept with --keep-series come along.
+  for (const fs::path& d : dirs) {
+    for (std::size_t i = 0; i < total; ++i) {
+      const fs::path series = d / "runs" / fmt::format("{}.metrics.csv", i);
+      std::error_code ec;
+      if (fs::exists(series, ec))
+        fs::copy_file(series, out / "runs" / series.filename(),
+                      fs::copy_options::overwrite_existing, ec);
+    }
+  }
   AtomicFile spec_file(out / "sweep.json");
-  spec_file.stream() << resolved.dump() << '\n';
+  nlohmann::json with_build = resolved;
+  with_build["provenance"] = first_build;
+  spec_file.stream() << with_build.dump() << '\n';
   spec_file.commit();
   write_runs_csv(out / "runs.csv", merged, results);
   write_summary_csv(out / "summary.csv", merged, results);
@@ -295,15 +362,19 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
       ok += r->error ? 0 : 1;
       converged += (!r->error && r->converged()) ? 1 : 0;
     }
+    // What a sample cannot tell is left empty, never written as 0: a rate without runs, a
+    // mean without values, a spread from fewer than two.
     out += fmt::format(",{},{},{}", rs.size(), rs.size() - ok,
-                       ok > 0 ? static_cast<double>(converged) / ok : 0.0);
+                       ok > 0 ? fmt::format("{}", static_cast<double>(converged) / ok) : "");
     for (const std::string& m : sweep_metrics()) {
       std::vector<double> xs;
       for (const SweepResult* r : rs) {
         if (!r->error) xs.push_back(r->number(m));
       }
       const SampleSummary s = summarize_sample(xs);
-      out += fmt::format(",{},{},{}", s.mean, s.stddev, s.ci95);
+      out += s.n == 0   ? ",,,"
+             : s.n == 1 ? fmt::format(",{},,", s.mean)
+                        : fmt::format(",{},{},{}", s.mean, s.stddev, s.ci95);
     }
     out += "\n";
   }
@@ -359,17 +430,24 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
       }
       std::vector<ChartSeries> series;
       for (const auto& [label, points] : lines) {
-        ChartSeries s{label, {}, true, false};
+        ChartSeries s{label, {}, true, false, {}};
         for (const auto& [x, ys] : points) {
           const SampleSummary sum = summarize_sample(ys);
           s.points.push_back({x, sum.mean, sum.mean - sum.ci95, sum.mean + sum.ci95});
+          for (double y : ys)
+            s.samples.emplace_back(x, y);
         }
         series.push_back(std::move(s));
       }
+      const auto with_unit = [](const std::string& name, const std::string& unit) {
+        return unit.empty() ? name : fmt::format("{} [{}]", name, unit);
+      };
       const fs::path file = dir / fmt::format("{}_vs_{}.svg", metric, spec.parameters[p]);
       AtomicFile f(file);
-      f.stream() << line_chart_svg(fmt::format("{} (mean, 95% confidence band)", metric),
-                                   spec.parameters[p], metric, series);
+      f.stream() << line_chart_svg(
+          fmt::format("{} (mean, 95% confidence band; dots: runs)", metric),
+          with_unit(spec.parameters[p], scenario_key_unit(spec.parameters[p])),
+          with_unit(metric, run_field_unit(metric)), series);
       f.commit();
       written.push_back(file);
     }

@@ -28,6 +28,7 @@ struct SweepOptions {
   bool progress = true;   // lines on stderr
   std::size_t shard = 0;  // run only runs with index % shards == shard
   std::size_t shards = 1;
+  bool keep_series = false;  // keep each run's metrics as DIR/runs/<index>.metrics.csv
 };
 
 // Throws std::runtime_error if DIR already holds a different sweep.

@@ -2,27 +2,58 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "scenarios/json_reader.hpp"
+#include "scenarios/scenario.hpp"
 #include "scenarios/scenario_error.hpp"
+#include "scenarios/scenario_override.hpp"
 
 namespace covsim {
 
-void set_dotted(nlohmann::json& j, const std::string& dotted, const nlohmann::json& value) {
-  nlohmann::json* at = &j;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t dot = dotted.find('.', start);
-    const std::string key =
-        dotted.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (!at->is_object()) *at = nlohmann::json::object();
-    if (dot == std::string::npos) {
-      (*at)[key] = value;
-      return;
+namespace {
+
+// Loads every setting's scenario once (with the first seed) before anything runs: a typo in a
+// path or a bad value is one error, at the value in the sweep file that caused it.
+void validate_settings(const SweepSpec& spec, const std::vector<std::string>& list_paths,
+                       std::size_t grid_parameters, std::size_t zip_rows) {
+  const auto under = [](const std::string& a, const std::string& b) {
+    return a.size() >= b.size() && a.compare(0, b.size(), b) == 0 &&
+           (a.size() == b.size() || a[b.size()] == '.' || a[b.size()] == '[');
+  };
+  for (std::size_t k = 0; k < spec.settings.size(); ++k) {
+    const SweepRun run{0, k, spec.seeds.front(), spec.settings[k]};
+    try {
+      parse_scenario(spec.scenario_for(run), spec.source + " (the scenario)", spec.scenario_dir);
+    } catch (const ScenarioError& e) {
+      for (std::size_t p = spec.parameters.size(); p-- > 0;) {
+        const std::string at = "$." + spec.parameters[p];
+        if (e.path().empty() || !(under(e.path(), at) || (e.path() != "$" && under(at, e.path()))))
+          continue;
+        // The value's place in its list: a zip row is the innermost index; a grid list has
+        // no repeats.
+        std::size_t index = k % std::max<std::size_t>(zip_rows, 1);
+        if (p < grid_parameters) {
+          std::vector<nlohmann::json> seen;
+          for (const auto& setting : spec.settings) {
+            if (std::find(seen.begin(), seen.end(), setting[p]) == seen.end())
+              seen.push_back(setting[p]);
+          }
+          index = static_cast<std::size_t>(
+              std::find(seen.begin(), seen.end(), spec.settings[k][p]) - seen.begin());
+        }
+        throw ScenarioError(
+            spec.source, fmt::format("{}[{}]", list_paths[p], index),
+            fmt::format("{} = {} gives an invalid scenario: {}: {}", spec.parameters[p],
+                        spec.settings[k][p].dump(), e.path(), e.detail()));
+      }
+      throw ScenarioError(spec.source, "$.scenario",
+                          fmt::format("the scenario is invalid: {}", e.what()));
     }
-    at = &(*at)[key];
-    start = dot + 1;
   }
 }
+
+}  // namespace
 
 SweepSpec load_sweep(const std::filesystem::path& file) {
   SweepSpec spec;
@@ -42,13 +73,21 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
     scenario.fail("expected a scenario file name or an inline scenario object");
   }
 
-  // Grid: a cartesian product, first key outermost.
+  // Grid: a cartesian product, first key outermost. Each parameter's list and where it is in
+  // the file, for errors that name the value at fault.
   std::vector<std::vector<nlohmann::json>> settings{{}};
-  auto check_key = [&](const JsonValue& where, const std::string& key) {
-    if (key.empty() || key.front() == '.' || key.back() == '.' ||
-        key.find("..") != std::string::npos) {
-      where.fail(fmt::format("\"{}\" is not a dotted path like \"network.loss.p\"", key));
+  std::vector<std::string> list_paths;
+  const auto no_repeats = [](const JsonValue& values) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (values.raw()[i] == values.raw()[j])
+          values[i].fail(
+              fmt::format("{} is listed twice (also at [{}])", values.raw()[i].dump(), j));
+      }
     }
+  };
+  auto check_key = [&](const JsonValue& where, const std::string& key) {
+    if (const std::string e = dotted_path_error(key); !e.empty()) where.fail(e);
     if (key == "seed") where.fail("\"seed\" is set by \"seeds\", not by the grid");
     for (const auto& p : spec.parameters) {
       if (p == key) where.fail(fmt::format("\"{}\" is swept twice", key));
@@ -60,7 +99,9 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
       const JsonValue values = *grid->find(key);
       check_key(values, key);
       if (values.size() == 0) values.fail("expected at least one value");
+      no_repeats(values);
       spec.parameters.push_back(key);
+      list_paths.push_back(values.path());
       std::vector<std::vector<nlohmann::json>> next;
       for (const auto& s : settings) {
         for (const auto& v : list) {
@@ -71,6 +112,8 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
       settings.swap(next);
     }
   }
+  const std::size_t grid_parameters = spec.parameters.size();
+  std::size_t zip_rows = 0;
   if (auto zip = root.find("zip")) {
     if (!zip->raw().is_object()) zip->fail("expected an object of dotted paths to value lists");
     std::size_t rows = 0;
@@ -83,8 +126,18 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
         values.fail(fmt::format("expected {} values, as the other zip lists", rows));
       rows = values.size();
       spec.parameters.push_back(key);
+      list_paths.push_back(values.path());
       columns.emplace_back(key, list);
     }
+    for (std::size_t r = 0; r < rows; ++r) {
+      for (std::size_t q = 0; q < r; ++q) {
+        bool same = true;
+        for (const auto& [key, list] : columns)
+          same = same && list[r] == list[q];
+        if (same) zip->fail(fmt::format("rows {} and {} are the same setting", q, r));
+      }
+    }
+    zip_rows = columns.empty() ? 0 : rows;
     if (!columns.empty()) {
       std::vector<std::vector<nlohmann::json>> next;
       for (const auto& s : settings) {
@@ -101,8 +154,14 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
 
   const JsonValue seeds = root.at("seeds");
   if (seeds.raw().is_array()) {
-    for (std::size_t i = 0; i < seeds.size(); ++i)
-      spec.seeds.push_back(seeds[i].unsigned_integer());
+    for (std::size_t i = 0; i < seeds.size(); ++i) {
+      const std::uint64_t seed = seeds[i].unsigned_integer();
+      for (std::size_t j = 0; j < spec.seeds.size(); ++j) {
+        if (spec.seeds[j] == seed)
+          seeds[i].fail(fmt::format("seed {} is listed twice (also at [{}])", seed, j));
+      }
+      spec.seeds.push_back(seed);
+    }
     if (spec.seeds.empty()) seeds.fail("expected at least one seed");
   } else {
     seeds.only_keys({"count"});
@@ -111,6 +170,7 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
     for (std::uint64_t s = 1; s <= n; ++s)
       spec.seeds.push_back(s);
   }
+  validate_settings(spec, list_paths, grid_parameters, zip_rows);
   return spec;
 }
 

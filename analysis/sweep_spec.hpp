@@ -35,7 +35,5 @@ SweepSpec load_sweep(const std::filesystem::path& file);
 // The resolved sweep, as kept in an output folder (DIR/sweep.json), and back.
 nlohmann::json to_json(const SweepSpec& spec);
 SweepSpec sweep_from_json(const nlohmann::json& j);
-// Sets a dotted path ("network.loss.p") in a JSON object, creating objects on the way.
-void set_dotted(nlohmann::json& j, const std::string& dotted, const nlohmann::json& value);
 
 }  // namespace covsim

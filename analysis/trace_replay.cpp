@@ -1,5 +1,7 @@
 #include "analysis/trace_replay.hpp"
 
+#include "analysis/provenance.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include "analysis/coverage_run.hpp"
@@ -48,6 +50,7 @@ TraceHeader trace_header_for(const Scenario& scenario, const std::filesystem::pa
   header.scenario_hash = fnv1a64(json);
   header.entries = {{"scenario", json},
                     {"scenario_dir", std::filesystem::absolute(scenario_dir).string()}};
+  add_provenance(header);
   return header;
 }
 
@@ -68,6 +71,7 @@ ReplayReport replay_trace(const std::filesystem::path& trace) {
                                            header_value(reader.header(), "scenario_dir"));
   TraceComparer comparer(reader);
   ReplayReport report;
+  report.build_differences = build_differences(provenance_of(reader.header()));
   try {
     const CoverageOutcome out = run_coverage(scenario, nullptr, &comparer);
     report.fingerprint = out.fingerprint;

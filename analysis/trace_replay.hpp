@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/trace.hpp"
 
@@ -17,6 +18,8 @@ struct ReplayReport {
   // The first diverging event: what the trace recorded and what the replay did (either may
   // be missing where one of them ended earlier).
   std::optional<TraceDivergence> divergence;
+  // How the build that wrote the trace differs from this one (empty: not at all).
+  std::vector<std::string> build_differences;
 };
 
 struct Scenario;

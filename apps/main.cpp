@@ -2,14 +2,17 @@
 #include <exception>
 #include <iostream>
 
+#include "analysis/provenance.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "scenarios/scenario_error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"covsim: discrete-event simulation of multi-robot Voronoi coverage"};
+  app.set_version_flag("--version", covsim::describe_build(covsim::this_build()));
   app.require_subcommand(1);
   covsim::app::add_cells_command(app);
+  covsim::app::add_describe_command(app);
   covsim::app::add_kernel_demo_command(app);
   covsim::app::add_list_command(app);
   covsim::app::add_merge_command(app);

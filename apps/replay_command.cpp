@@ -31,6 +31,11 @@ void add_replay_command(CLI::App& app) {
   cmd->callback([trace, plugins] {
     load_plugins(*plugins);
     const ReplayReport r = replay_trace(*trace);
+    if (!r.build_differences.empty()) {
+      fmt::print(stderr, "covsim: warning: {} was written by a different build:\n", *trace);
+      for (const std::string& d : r.build_differences)
+        fmt::print(stderr, "  {}\n", d);
+    }
     if (r.matches) {
       fmt::print("replay matches: {} events, fingerprint {}\n", r.events,
                  Fingerprint::to_hex(r.fingerprint));

@@ -1,6 +1,6 @@
-// `covsim run SCENARIO --out DIR`: runs the paper's controller and writes final.json,
-// trajectory.csv, metrics.csv, scene.svg and cost.svg into DIR, all of them only if the
-// run succeeds.
+// `covsim run SCENARIO [--seed N] [--set PATH=VALUE ...] [--out DIR]`: runs the scenario and
+// writes scenario.json, final.json, trajectory.csv, metrics.csv, scene.svg and cost.svg into
+// DIR (default out/<scenario name>-<seed>), all of them only if the run succeeds.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -16,6 +16,7 @@
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
+#include "apps/scenario_options.hpp"
 #include "core/atomic_file.hpp"
 #include "core/fingerprint.hpp"
 #include "core/trace.hpp"
@@ -40,7 +41,7 @@ struct CreatedDirectory {
 
 void add_run_command(CLI::App& app) {
   struct Options {
-    std::string scenario;
+    ScenarioOptions scenario;
     std::string out;
     std::string trace;
     std::vector<std::string> plugins;
@@ -48,17 +49,24 @@ void add_run_command(CLI::App& app) {
   auto opts = std::make_shared<Options>();
   CLI::App* cmd =
       app.add_subcommand("run", "Run the coverage controller on a scenario and write its outputs");
-  cmd->add_option("SCENARIO", opts->scenario, "Scenario file")->required();
-  cmd->add_option("--out", opts->out, "Output directory (created if missing)")->required();
+  opts->scenario.add_to(cmd, "Scenario file");
+  cmd->add_option("--out", opts->out,
+                  "Output directory, created if missing (default out/<scenario name>-<seed>)");
   cmd->add_option("--trace", opts->trace, "Also write the event trace to this file");
   add_plugin_option(cmd, opts->plugins);
   cmd->callback([opts] {
     load_plugins(opts->plugins);
-    const Scenario scenario = load_scenario(opts->scenario);
+    const Scenario scenario = opts->scenario.load();
     if (scenario.robot_positions.empty())
-      throw ScenarioError(scenario.source + ": $: missing required key \"robots\"");
-    if (!scenario.seed) throw ScenarioError(scenario.source + ": $: missing required key \"seed\"");
-    const fs::path dir = opts->out;
+      throw ScenarioError(scenario.source, "$", "missing required key \"robots\"");
+    if (!scenario.seed)
+      throw ScenarioError(scenario.source, "$",
+                          "missing required key \"seed\" (or give one with --seed)");
+    const fs::path dir =
+        !opts->out.empty()
+            ? fs::path(opts->out)
+            : fs::path("out") / fmt::format("{}-{}", fs::path(opts->scenario.file).stem().string(),
+                                            *scenario.seed);
     CreatedDirectory guard{dir};
     std::error_code ec;
     if (!fs::exists(dir)) {
@@ -71,7 +79,8 @@ void add_run_command(CLI::App& app) {
     }
     std::unique_ptr<TraceWriter> trace;
     if (!opts->trace.empty()) {
-      const TraceHeader header = trace_header_for(scenario, fs::path(opts->scenario).parent_path());
+      const TraceHeader header =
+          trace_header_for(scenario, fs::path(opts->scenario.file).parent_path());
       trace = std::make_unique<TraceWriter>(opts->trace, header);
     }
     RunRecorder recorder(dir, scenario.robot_positions);
@@ -80,7 +89,7 @@ void add_run_command(CLI::App& app) {
     AtomicFile final_file(dir / "final.json"), scene(dir / "scene.svg"), cost(dir / "cost.svg");
     AtomicFile scenario_copy(dir / "scenario.json");
     scenario_copy.stream()
-        << portable_scenario(scenario, fs::path(opts->scenario).parent_path()).dump(2) << "\n";
+        << portable_scenario(scenario, fs::path(opts->scenario.file).parent_path()).dump(2) << "\n";
     final_file.stream() << final_json(outcome);
     scene.stream() << scene_svg(scenario, outcome, recorder.real_paths(), recorder.virtual_paths());
     cost.stream() << cost_svg(recorder.samples());

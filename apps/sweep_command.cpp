@@ -22,6 +22,7 @@ void add_sweep_command(CLI::App& app) {
     std::size_t jobs = std::max(1u, std::thread::hardware_concurrency());
     std::string shard = "0/1";
     std::string group;
+    bool keep_series = false;
     std::vector<std::string> plugins;
   };
   auto opts = std::make_shared<Options>();
@@ -32,6 +33,8 @@ void add_sweep_command(CLI::App& app) {
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   cmd->add_option("--group", opts->group, "Plot one line per value of this swept parameter");
+  cmd->add_flag("--keep-series", opts->keep_series,
+                "Keep each run's metrics (metrics.csv's columns) as DIR/runs/<index>.metrics.csv");
   add_plugin_option(cmd, opts->plugins);
   cmd->add_option("--shard", opts->shard, "Run only slice K of N (K in 0..N-1), for clusters")
       ->capture_default_str();
@@ -51,7 +54,7 @@ void add_sweep_command(CLI::App& app) {
     }
     const std::filesystem::path dir = opts->out;
     const std::vector<SweepResult> results =
-        run_sweep(spec, dir, SweepOptions{opts->jobs, true, k, n});
+        run_sweep(spec, dir, SweepOptions{opts->jobs, true, k, n, opts->keep_series});
     write_runs_csv(dir / "runs.csv", spec, results);
     write_summary_csv(dir / "summary.csv", spec, results);
     const auto plots = write_sweep_plots(dir, spec, results, opts->group);

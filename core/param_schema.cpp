@@ -136,8 +136,10 @@ ParamSpec& ParamSpec::defaults_to(ParamValue v) {
   default_value = std::move(v);
   return *this;
 }
-ParamSpec& ParamSpec::derived(std::string rule) {
+ParamSpec& ParamSpec::derived(std::string rule,
+                              std::function<ParamValue(const Environment&)> value) {
   default_rule = std::move(rule);
+  derive = std::move(value);
   return *this;
 }
 ParamSpec& ParamSpec::or_null() {
@@ -297,6 +299,14 @@ Params with_defaults(const ParamSchema& schema, Params p) {
     } else if (s.required()) {
       throw ParamError(s.name, fmt::format("missing required key \"{}\"", s.name));
     }
+  }
+  return p;
+}
+
+Params with_derived(const ParamSchema& schema, Params p, const Environment& env) {
+  for (const ParamSpec& spec : schema) {
+    if (spec.derive && !p.has(spec.name) && !p.is_null(spec.name))
+      p.set(spec.name, spec.derive(env));
   }
   return p;
 }

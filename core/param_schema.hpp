@@ -6,6 +6,7 @@
 // section through its schema, `covsim list` prints the schema, and factories read the
 // validated values from Params.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,8 @@
 #include "core/geometry/vec2.hpp"
 
 namespace covsim {
+
+class Environment;
 
 enum class ParamKind {
   number,   // a finite real number
@@ -46,8 +49,10 @@ struct ParamSpec {
   std::vector<std::string> choices;
   std::optional<ParamValue> default_value;  // a constant default
   std::string default_rule;                 // a default that depends on the run, in words
-  bool nullable = false;                    // null is a value (the description says what)
-  std::vector<ParamSpec> fields;            // objects: the fields of each element
+  // The rule's value for an environment (what `covsim describe` shows and factories use).
+  std::function<ParamValue(const Environment&)> derive;
+  bool nullable = false;          // null is a value (the description says what)
+  std::vector<ParamSpec> fields;  // objects: the fields of each element
 
   bool required() const { return !default_value && default_rule.empty(); }
 
@@ -66,7 +71,8 @@ struct ParamSpec {
   ParamSpec& at_most(double v);
   ParamSpec& below(double v);
   ParamSpec& defaults_to(ParamValue v);
-  ParamSpec& derived(std::string rule);
+  ParamSpec& derived(std::string rule,
+                     std::function<ParamValue(const Environment&)> value = nullptr);
   ParamSpec& or_null();
 };
 
@@ -120,6 +126,8 @@ class Params {
 // The schema's constant defaults filled in for the parameters not set. Throws ParamError for
 // a required parameter that is missing.
 Params with_defaults(const ParamSchema& schema, Params p);
+// The derived defaults computed for an environment, for the parameters not set.
+Params with_derived(const ParamSchema& schema, Params p, const Environment& env);
 
 // A schema as `covsim list` prints it: one line per parameter (name, kind, default, unit,
 // bounds, description), nested fields indented.

@@ -86,11 +86,13 @@ PlannerEntry grid_astar_entry() {
   PlannerEntry e;
   e.name = "grid_astar";
   e.description = "8-connected A* on an occupancy grid of the map, shortened by line of sight";
+  const auto cell = [](const Environment& env) { return env.diameter() / 200.0; };
   e.params = {ParamSpec::number("resolution", "m", "the grid's cell side")
                   .greater_than(0)
-                  .derived("1/200 of the diameter of Ω's bounding box")};
-  const auto resolution = [](const Environment& env, const Params& p) {
-    return p.maybe_number("resolution").value_or(env.diameter() / 200.0);
+                  .derived("1/200 of the diameter of Ω's bounding box",
+                           [cell](const Environment& env) { return cell(env); })};
+  const auto resolution = [cell](const Environment& env, const Params& p) {
+    return p.maybe_number("resolution").value_or(cell(env));
   };
   e.check = [resolution](const Environment& env, const Params& p) {
     const double h = resolution(env, p);

@@ -84,7 +84,10 @@ PlannerEntry potential_field_entry() {
   e.params = {
       ParamSpec::number("influence", "m", "distance d0 within which walls repel")
           .greater_than(0)
-          .derived("1/10 of the diameter of Ω's bounding box"),
+          .derived("1/10 of the diameter of Ω's bounding box",
+                   [](const Environment& env) {
+                     return PotentialFieldParams::for_environment(env.diameter()).influence;
+                   }),
       ParamSpec::number("repulsive_gain", "", "η in units of d0³/48").at_least(0).defaults_to(1.0),
       ParamSpec::integer("stall_window", "steps",
                          "steps without progress after which it reports a stall")

@@ -50,6 +50,12 @@ struct CoverageConfig {
   // of the diameter of Ω's bounding box.
   std::optional<double> position_tolerance;
   std::optional<double> virtual_tolerance;
+  double position_tolerance_in(double diameter) const {
+    return position_tolerance.value_or(1e-3 * diameter);
+  }
+  double virtual_tolerance_in(double diameter) const {
+    return virtual_tolerance.value_or(1e-3 * diameter);
+  }
   SimTime max_time = SimTime::from_ns(600'000'000'000);   // 600 s
   SimTime sample_period = SimTime::from_ns(500'000'000);  // metrics every 0.5 s
   NetworkConfig network;

@@ -17,8 +17,8 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
                                        const Density& density, const std::vector<Vec2>& starts,
                                        CoverageConfig config, const PlannerMaker& make_planner)
     : kernel_(kernel), env_(env), integrator_(env, density), config_(std::move(config)) {
-  tol_ = Tolerances{config_.position_tolerance.value_or(1e-3 * env.diameter()),
-                    config_.virtual_tolerance.value_or(1e-3 * env.diameter())};
+  tol_ = Tolerances{config_.position_tolerance_in(env.diameter()),
+                    config_.virtual_tolerance_in(env.diameter())};
   step_ = config_.max_speed * config_.loop2_period.seconds();
   const PlannerSource source =
       make_planner ? PlannerSource{}

@@ -23,15 +23,17 @@ Vec2 GeodesicLloydLaw::target(const Robot& r, const Knowledge& k) {
 }
 
 LawEntry geodesic_lloyd_entry() {
-  const auto resolution = [](const Environment& env, const Params& p) {
-    return p.maybe_number("resolution").value_or(env.diameter() / 100.0);
+  const auto lattice = [](const Environment& env) { return env.diameter() / 100.0; };
+  const auto resolution = [lattice](const Environment& env, const Params& p) {
+    return p.maybe_number("resolution").value_or(lattice(env));
   };
   LawEntry e;
   e.name = "geodesic_lloyd";
   e.description = "Lloyd under the geodesic distance in Ω, a damped step toward its Lloyd point";
   e.params = {ParamSpec::number("resolution", "m", "spacing of the integration lattice")
                   .greater_than(0)
-                  .derived("1/100 of the diameter of Ω's bounding box"),
+                  .derived("1/100 of the diameter of Ω's bounding box",
+                           [lattice](const Environment& env) { return lattice(env); }),
               ParamSpec::number("gain", "", "fraction of the step to the geodesic Lloyd point")
                   .greater_than(0)
                   .at_most(1)

@@ -1,10 +1,14 @@
 #include <fmt/format.h>
+
 #include <cmath>
+#include <numbers>
 
 #include "core/geometry/cell_integrator.hpp"
 #include "core/geometry/density_registry.hpp"
 #include "core/geometry/geometry_error.hpp"
+#include "core/geometry/placement.hpp"
 #include "core/geometry/ring_validation.hpp"
+#include "core/random_stream.hpp"
 #include "net/delay_registry.hpp"
 #include "net/loss_registry.hpp"
 #include "planners/planner_registry.hpp"
@@ -37,11 +41,12 @@ std::shared_ptr<const Environment> read_environment(const JsonValue& v) {
 
 std::shared_ptr<const Density> read_density(const JsonValue& v,
                                             const std::filesystem::path& base_dir,
-                                            const Environment& env) {
+                                            const Environment& env,
+                                            std::optional<std::uint64_t> seed) {
   const ComponentChoice c = read_component(v, density_registry(), "type");
   std::shared_ptr<const Density> d;
   try {
-    d = density_registry().at(c.type).make(DensityContext{env, base_dir}, c.params);
+    d = density_registry().at(c.type).make(DensityContext{env, base_dir, seed}, c.params);
   } catch (const ParamError& e) {
     fail_param(v, e);
   } catch (const std::invalid_argument& e) {
@@ -100,7 +105,8 @@ void read_network(const JsonValue& v, NetworkConfig& n) {
 }
 
 void read_coverage(const JsonValue& root, CoverageConfig& c) {
-  if (auto n = root.find("network")) read_network(*n, c.network);
+  // null: the ideal network, as if absent (so that a sweep can vary it against others).
+  if (auto n = root.find("network"); n && !n->is_null()) read_network(*n, c.network);
   if (auto r = root.find("robots")) {
     if (auto v = r->find("max_speed")) c.max_speed = v->positive();
   }
@@ -149,11 +155,8 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
   }
 }
 
-std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env) {
-  v.only_keys({"positions", "max_speed"});
-  const JsonValue list = v.at("positions");
-  std::vector<Vec2> positions = list.points();
-  if (positions.empty()) list.fail("expected at least one robot");
+void check_distinct(const JsonValue& list, const std::vector<Vec2>& positions,
+                    const Environment& env) {
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const Vec2 p = positions[i];
     if (!env.contains(p))
@@ -166,7 +169,112 @@ std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env) {
         list[i].fail(fmt::format("robots {} and {} start at the same position", j, i));
     }
   }
-  return positions;
+}
+
+Placement read_start(const JsonValue& v) {
+  v.only_keys({"uniform", "region", "cluster"});
+  const int given =
+      (v.find("uniform") ? 1 : 0) + (v.find("region") ? 1 : 0) + (v.find("cluster") ? 1 : 0);
+  if (given != 1) v.fail("expected exactly one of \"uniform\", \"region\" and \"cluster\"");
+  Placement p;
+  if (auto u = v.find("uniform")) {
+    if (!u->boolean()) u->fail("expected true (or another kind of start)");
+    p.kind = Placement::Kind::uniform;
+  } else if (auto r = v.find("region")) {
+    p.kind = Placement::Kind::region;
+    try {
+      p.region = normalize_ring(r->points(), 0, true);
+    } catch (const GeometryError& e) {
+      r->fail(fmt::format("expected a simple polygon: {}", e.what()));
+    }
+  } else {
+    const JsonValue c = v.at("cluster");
+    c.only_keys({"center", "radius"});
+    p.kind = Placement::Kind::cluster;
+    p.center = c.at("center").point();
+    p.radius = c.at("radius").positive();
+  }
+  return p;
+}
+
+// The area robots are drawn over, for the default separation.
+double start_area(const Placement& p, const Environment& env) {
+  switch (p.kind) {
+    case Placement::Kind::uniform:
+      return env.area();
+    case Placement::Kind::region:
+      return std::fabs(signed_area(p.region));
+    case Placement::Kind::cluster:
+      return std::numbers::pi * p.radius * p.radius;
+  }
+  return env.area();
+}
+
+// "robots": given positions (perturbed by "jitter" per seed), or "count" robots drawn per seed
+// by "start". Draws come from the seed's "robot-start" stream.
+std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
+                              std::optional<std::uint64_t> seed) {
+  v.only_keys({"positions", "count", "start", "separation", "jitter", "max_speed"});
+  const auto positions = v.find("positions");
+  const auto count = v.find("count");
+  if (positions && count) v.fail("expected \"positions\" or \"count\", not both");
+  if (!positions && !count)
+    v.fail("missing required key \"positions\" (or \"count\" and \"start\")");
+  const auto stream = [&](const JsonValue& where) {
+    if (!seed)
+      where.fail("robots drawn per seed need the scenario's \"seed\" (or covsim run --seed)");
+    return RandomStream(*seed, 0, "robot-start");
+  };
+  std::vector<Vec2> out;
+  if (positions) {
+    if (auto s = v.find("start")) s->fail("\"start\" goes with \"count\", not \"positions\"");
+    out = positions->points();
+    if (out.empty()) positions->fail("expected at least one robot");
+    check_distinct(*positions, out, env);
+    if (auto j = v.find("jitter")) {
+      const double sigma = j->non_negative();
+      if (auto s = v.find("separation")) s->fail("\"separation\" goes with \"count\"");
+      if (sigma > 0.0) {
+        // Each robot moves by a Gaussian step per coordinate, redrawn until it lands in Ω
+        // and on no other robot.
+        RandomStream rng = stream(*j);
+        for (std::size_t i = 0; i < out.size(); ++i) {
+          const Vec2 given = out[i];
+          for (int tries = 0;; ++tries) {
+            if (tries == 1000)
+              (*positions)[i].fail(fmt::format(
+                  "no jittered position in Ω found in 1000 tries (jitter {} m)", sigma));
+            const Vec2 q = given + Vec2{rng.normal(0.0, sigma), rng.normal(0.0, sigma)};
+            bool free = env.contains(q);
+            for (std::size_t k = 0; free && k < out.size(); ++k)
+              free = k == i || !(out[k] == q);
+            if (free) {
+              out[i] = q;
+              break;
+            }
+          }
+        }
+      }
+    } else if (auto s = v.find("separation")) {
+      s->fail("\"separation\" goes with \"count\"");
+    }
+    return out;
+  }
+  if (auto j = v.find("jitter")) j->fail("\"jitter\" goes with \"positions\"");
+  const std::uint64_t n = count->unsigned_integer();
+  if (n == 0 || n > 100000) count->fail(fmt::format("expected 1 to 100000 robots, found {}", n));
+  const JsonValue start = v.at("start");
+  const Placement placement = read_start(start);
+  const double separation =
+      v.find("separation") ? v.at("separation").non_negative()
+                           : 0.05 * std::sqrt(start_area(placement, env) / static_cast<double>(n));
+  RandomStream rng = stream(start);
+  try {
+    out = place_points(env, placement, n, separation, rng);
+  } catch (const PlacementError& e) {
+    start.fail(e.what());
+  }
+  return out;
 }
 
 }  // namespace
@@ -179,10 +287,11 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   const JsonValue root(s.json, source);
   root.only_keys({"environment", "density", "robots", "seed", "planner", "controller", "sensor",
                   "loops", "convergence", "metrics", "network"});
-  s.environment = read_environment(root.at("environment"));
-  s.density = read_density(root.at("density"), base_dir, *s.environment);
-  if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment);
   if (auto seed = root.find("seed")) s.seed = seed->unsigned_integer();
+  s.base_dir = base_dir;
+  s.environment = read_environment(root.at("environment"));
+  s.density = read_density(root.at("density"), base_dir, *s.environment, s.seed);
+  if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment, s.seed);
   read_coverage(root, s.coverage);
   // Checks that need the environment (grids too fine for it) fail here, not at a run's start.
   const auto check = [&](const auto& entry, const Params& params, const char* key) {
@@ -202,6 +311,35 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
 
 Scenario load_scenario(const std::filesystem::path& file) {
   return parse_scenario(read_json_file(file), file.string(), file.parent_path());
+}
+
+bool draws_from_seed(const nlohmann::json& j) {
+  if (j.contains("robots") && j["robots"].is_object()) {
+    const auto& r = j["robots"];
+    if (r.contains("count")) return true;
+    if (r.contains("jitter") && r["jitter"].is_number() && r["jitter"].get<double>() > 0.0)
+      return true;
+  }
+  if (j.contains("density") && j["density"].is_object() && j["density"].contains("components") &&
+      j["density"]["components"].is_array()) {
+    for (const auto& c : j["density"]["components"]) {
+      if (c.is_object() && c.contains("mean") && c["mean"].is_null()) return true;
+    }
+  }
+  return false;
+}
+
+Scenario with_seed(const Scenario& scenario, std::uint64_t seed) {
+  if (scenario.seed == seed) return scenario;
+  if (!draws_from_seed(scenario.json)) {
+    Scenario s = scenario;
+    s.seed = seed;
+    s.json["seed"] = seed;
+    return s;
+  }
+  nlohmann::json j = scenario.json;
+  j["seed"] = seed;
+  return parse_scenario(j, scenario.source, scenario.base_dir);
 }
 
 }  // namespace covsim

@@ -2,9 +2,11 @@
 // The density φ: how much each point of Ω matters. Integrated over convex pieces of Ω
 // (φ is zero outside Ω, which the callers ensure by integrating only over Ω). An extension
 // point: a density is this interface plus one entry in density_registry().
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "core/geometry/convex_polygon.hpp"
 #include "core/registry.hpp"
@@ -23,14 +25,16 @@ class Density {
   virtual bool is_uniform() const { return false; }
 };
 
-// What a density's factory may consult: the environment (a raster must cover it) and the
-// folder the scenario file is in (files it names are relative to it).
+// What a density's factory may consult: the environment (a raster must cover it), the
+// folder the scenario file is in (files it names are relative to it) and the scenario's seed
+// (for what is drawn per seed; unset when the scenario has none).
 struct DensityContext {
   const Environment& environment;
   std::filesystem::path base_dir;
+  std::optional<std::uint64_t> seed;
 };
 
-using DensityEntry = Component<
-    std::function<std::shared_ptr<const Density>(const DensityContext&, const Params&)>>;
+using DensityEntry =
+    Component<std::function<std::shared_ptr<const Density>(const DensityContext&, const Params&)>>;
 
 }  // namespace covsim

@@ -5,7 +5,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/geometry/placement.hpp"
 #include "core/geometry/quadrature.hpp"
+#include "core/random_stream.hpp"
 
 namespace covsim {
 
@@ -82,15 +84,32 @@ DensityEntry gaussian_mixture_density_entry() {
   e.description = "floor + a sum of Gaussian bumps (not normalised)";
   e.params = {
       ParamSpec::objects("components",
-                         {ParamSpec::point("mean", "m", "centre of the bump"),
+                         {ParamSpec::point("mean", "m",
+                                           "centre of the bump; null: drawn uniformly in Ω from "
+                                           "the scenario's seed")
+                              .or_null(),
                           ParamSpec::number("sigma", "m", "standard deviation").greater_than(0),
                           ParamSpec::number("weight", "", "height of the bump").at_least(0)},
                          "the bumps"),
       ParamSpec::number("floor", "", "value added everywhere").at_least(0).defaults_to(0.0)};
-  e.make = [](const DensityContext&, const Params& p) {
+  e.make = [](const DensityContext& ctx, const Params& p) {
     std::vector<GaussianComponent> cs;
-    for (const Params& c : p.objects("components"))
-      cs.push_back(GaussianComponent{c.point("mean"), c.number("sigma"), c.number("weight")});
+    const ParamObjects& components = p.objects("components");
+    for (std::size_t k = 0; k < components.size(); ++k) {
+      const Params& c = components[k];
+      Vec2 mean;
+      if (c.has("mean")) {
+        mean = c.point("mean");
+      } else {
+        if (!ctx.seed)
+          throw ParamError("components",
+                           "a null mean is drawn from the scenario's \"seed\", "
+                           "and the scenario has none");
+        RandomStream rng(*ctx.seed, k, "density-mean");
+        mean = uniform_point(ctx.environment, rng);
+      }
+      cs.push_back(GaussianComponent{mean, c.number("sigma"), c.number("weight")});
+    }
     return std::make_shared<const GaussianMixtureDensity>(std::move(cs), p.number("floor"));
   };
   return e;

@@ -99,12 +99,14 @@ def _as_scenario(s):
     return Scenario.from_file(os.fspath(s))
 
 
-def sweep(spec, jobs=1, out=None):
+def sweep(spec, jobs=1, out=None, keep_series=False):
     """Runs a sweep (docs/sweeps.md) on `jobs` C++ threads, the GIL released. spec: a sweep
     file's path, or its object (a "scenario" given by path is relative to the current
     folder). out: the output folder (runs/, runs.csv, summary.csv); a temporary one if None.
+    keep_series: keep each run's metrics as out/runs/<index>.metrics.csv (give out).
     Returns the rows of runs.csv: a pandas DataFrame when pandas can be imported, else a list
-    of dicts. Results do not depend on jobs."""
+    of dicts. Every setting is validated before anything runs (a ScenarioError naming the
+    value). Results do not depend on jobs."""
     with tempfile.TemporaryDirectory(prefix="covsim-sweep-") as scratch:
         if isinstance(spec, dict):
             spec = dict(spec)
@@ -116,7 +118,7 @@ def sweep(spec, jobs=1, out=None):
         else:
             path = os.fspath(spec)
         rows = _covsim._sweep(path, os.fspath(out) if out is not None else
-                              os.path.join(scratch, "out"), int(jobs))
+                              os.path.join(scratch, "out"), int(jobs), bool(keep_series))
     try:
         import pandas
     except ImportError:

@@ -4,8 +4,8 @@
 
 #include <pybind11/stl/filesystem.h>
 
-#include "analysis/sweep_spec.hpp"
 #include "scenarios/json_reader.hpp"
+#include "scenarios/scenario_override.hpp"
 
 namespace covsim::python {
 
@@ -41,6 +41,7 @@ PyScenario PyScenario::from_json(nlohmann::json j, const std::string& source,
 }
 
 void PyScenario::set(const std::string& path, const nlohmann::json& value) {
+  if (const std::string e = dotted_path_error(path); !e.empty()) throw py::value_error(e);
   nlohmann::json j = json;
   set_dotted(j, path, value);
   parsed = parse_scenario(j, parsed.source, base_dir);  // validated, or nothing changes

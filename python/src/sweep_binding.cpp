@@ -11,12 +11,13 @@ namespace covsim::python {
 void bind_sweep(py::module_& m) {
   m.def(
       "_sweep",
-      [](const std::string& file, const std::string& out, std::size_t jobs) {
+      [](const std::string& file, const std::string& out, std::size_t jobs, bool keep_series) {
         const SweepSpec spec = load_sweep(file);
         std::vector<SweepResult> results;
         {
           py::gil_scoped_release release;
-          results = run_sweep(spec, out, SweepOptions{std::max<std::size_t>(1, jobs), false, 0, 1});
+          results = run_sweep(
+              spec, out, SweepOptions{std::max<std::size_t>(1, jobs), false, 0, 1, keep_series});
           write_runs_csv(std::filesystem::path(out) / "runs.csv", spec, results);
           write_summary_csv(std::filesystem::path(out) / "summary.csv", spec, results);
         }
@@ -40,7 +41,7 @@ void bind_sweep(py::module_& m) {
         }
         return rows;
       },
-      py::arg("file"), py::arg("out"), py::arg("jobs"));
+      py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("keep_series") = false);
 }
 
 }  // namespace covsim::python

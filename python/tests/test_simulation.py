@@ -147,3 +147,16 @@ def test_the_gil_is_released_while_covsim_runs(scenarios):
     inside = [t for t in ticks if start + 0.1 * (end - start) < t < end - 0.1 * (end - start)]
     assert end - start > 0.05  # long enough to tell
     assert len(inside) > 100
+
+
+def test_a_seed_draws_its_own_robots_as_the_command_line_does(scenarios, cli, tmp_path):
+    s = covsim.Scenario.from_file(scenarios / "u_shape.json")
+    s.set("robots", {"count": 5, "start": {"cluster": {"center": [0.15, 0.85], "radius": 0.12}}})
+    one, two = covsim.Simulation(s, seed=1), covsim.Simulation(s, seed=2)
+    assert one.positions.shape == (5, 2)
+    assert not (one.positions == two.positions).all()
+    assert (np.linalg.norm(one.positions - [0.15, 0.85], axis=1) <= 0.12).all()
+    (tmp_path / "drawn.json").write_text(json.dumps(s.to_dict()))
+    cli("run", tmp_path / "drawn.json", "--seed", "2", "--out", tmp_path / "run")
+    final = json.loads((tmp_path / "run" / "final.json").read_text())
+    assert two.run()["fingerprint"] == final["fingerprint"]

@@ -3,6 +3,7 @@ import json
 
 import numpy as np
 import pandas
+import pytest
 
 import covsim
 
@@ -40,3 +41,17 @@ def test_load_run_reads_a_run_folder_into_arrays(scenarios, cli, tmp_path):
     assert list(path[-1]) == final["robots"][0]["position"]
     assert run.metrics["t"][-1] == final["sim_time"]
     assert run.metrics["cost_real"][-1] == final["cost"]["real"]
+
+
+def test_a_sweep_is_validated_before_it_runs_and_keeps_series(scenarios, tmp_path):
+    spec = {"scenario": str(scenarios / "u_shape.json"),
+            "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.2, 1.5]},
+            "seeds": [1, 2]}
+    with pytest.raises(covsim.ScenarioError, match=r"network\.loss\.p\[1\]"):
+        covsim.sweep(spec, out=tmp_path / "bad")
+    assert not (tmp_path / "bad" / "runs").exists()
+    spec["grid"]["network.loss.p"] = [0.2]
+    rows = covsim.sweep(spec, out=tmp_path / "ok", keep_series=True)
+    series = tmp_path / "ok" / "runs" / "0.metrics.csv"
+    assert series.exists() and series.read_text().startswith("t,cost_real")
+    assert (rows["messages_delivered"] > 0).all() and (rows["info_age_mean"] > 0).all()

@@ -2,6 +2,8 @@
 // tables, and the documentation lists the same fields in the same order.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -40,12 +42,14 @@ std::vector<std::string> split(const std::string& s, const std::string& by) {
   return out;
 }
 
-// Dotted keys of a JSON object, in document order, nested objects flattened.
+// Dotted keys of a JSON object, in document order, nested objects flattened except those
+// named in `leaves` (fields whose value is a JSON object).
 void flatten(const nlohmann::ordered_json& j, const std::string& prefix,
-             std::vector<std::string>& out) {
+             std::vector<std::string>& out,
+             const std::vector<std::string>& leaves = {"provenance"}) {
   for (const auto& [k, v] : j.items()) {
-    if (v.is_object()) {
-      flatten(v, prefix + k + ".", out);
+    if (v.is_object() && std::find(leaves.begin(), leaves.end(), prefix + k) == leaves.end()) {
+      flatten(v, prefix + k + ".", out, leaves);
     } else {
       out.push_back(prefix + k);
     }

@@ -93,10 +93,13 @@ TEST_CASE("a rerun skips finished runs and redoes missing ones", "[sweep]") {
 
 TEST_CASE("a failing run is recorded and the sweep goes on", "[sweep]") {
   const fs::path dir = temp_dir("failure");
-  const SweepSpec spec = load_sweep(write_sweep(
+  SweepSpec spec = load_sweep(write_sweep(
       dir,
       R"({"scenario": ")" + std::string(COVSIM_SOURCE_DIR) +
-          R"(/scenarios/u_shape.json", "grid": {"robots.max_speed": [0.1, -1]}, "seeds": [1]})"));
+          R"(/scenarios/u_shape.json", "grid": {"robots.max_speed": [0.1, 0.2]}, "seeds": [1]})"));
+  // A sweep file with this value is refused before anything runs; a sweep built by a program
+  // is not validated, and its failing run is recorded.
+  spec.settings[1][0] = -1;
   const auto results = run_sweep(spec, dir / "out", SweepOptions{1, false, 0, 1});
   REQUIRE(results.size() == 2);
   CHECK_FALSE(results[0].error);
@@ -110,7 +113,9 @@ TEST_CASE("a failing run is recorded and the sweep goes on", "[sweep]") {
   std::getline(in, header);
   std::getline(in, row0);
   std::getline(in, row1);
-  CHECK_THAT(row1, Catch::StartsWith("1,-1,1,1,0,"));  // one run, one failed, no convergence
+  // One run, one failed: no convergence rate and no statistics, rather than zeros.
+  CHECK_THAT(row1, Catch::StartsWith("1,-1,1,1,,"));
+  CHECK(row1.find_first_not_of(",", std::string("1,-1,1,1,").size()) == std::string::npos);
 }
 
 TEST_CASE("shards split the runs without overlap", "[sweep]") {
@@ -142,6 +147,27 @@ TEST_CASE("sweep files are validated", "[sweep]") {
   error("{" + scenario + R"(, "seeds": {"count": 0}})", "$.seeds.count: expected a count");
   error("{" + scenario + "}", "missing required key \"seeds\"");
   error(R"({"scenario": 3, "seeds": [1]})", "$.scenario: expected a scenario file name");
+  // Every setting's scenario is loaded before anything runs; the error names the value.
+  error("{" + scenario +
+            R"(, "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.1, 2]},
+                 "seeds": [1]})",
+        "$.grid.network.loss.p[1]: network.loss.p = 2 gives an invalid scenario: "
+        "$.network.loss.p: expected a number >= 0 and <= 1, found 2");
+  error("{" + scenario + R"(, "grid": {"sensor.rnage": [1, 2]}, "seeds": [1]})",
+        "$.grid.sensor.rnage[0]: sensor.rnage = 1 gives an invalid scenario: $.sensor.rnage: "
+        "unknown key");
+  error("{" + scenario +
+            R"(, "zip": {"loops.mode": ["periodic", "periodic"],
+                         "loops.loop1_period": [1, -1]}, "seeds": [1]})",
+        "$.zip.loops.loop1_period[1]: loops.loop1_period = -1");
+  // Repeats would count one setting or seed twice.
+  error("{" + scenario + R"(, "seeds": [1, 2, 1]})", "$.seeds[2]: seed 1 is listed twice");
+  error("{" + scenario + R"(, "grid": {"sensor.range": [1, 2, 1]}, "seeds": [1]})",
+        "$.grid.sensor.range[2]: 1 is listed twice");
+  error("{" + scenario +
+            R"(, "zip": {"sensor.range": [1, 2, 1], "metrics.period": [0.5, 1, 0.5]},
+                 "seeds": [1]})",
+        "$.zip: rows 0 and 2 are the same setting");
 }
 
 TEST_CASE("shards plus merge equal the whole sweep", "[sweep]") {
@@ -243,4 +269,43 @@ TEST_CASE("an unlimited (null) value is left off a plot's axis, not the plot", "
   std::ifstream in(dir / "out" / "runs.csv");
   const std::string csv((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK_THAT(csv, Catch::Contains(",null,"));
+}
+
+TEST_CASE("runs record their communication, and seeds deploy robots apart", "[sweep]") {
+  const fs::path dir = temp_dir("communication");
+  const std::string u = std::string(COVSIM_SOURCE_DIR) + "/scenarios/u_shape.json";
+  // The ideal network and a lossy one; robots drawn per seed.
+  const SweepSpec spec = load_sweep(write_sweep(dir, R"({"scenario": ")" + u + R"(",
+      "grid": {"robots": [{"count": 5, "start": {"cluster": {"center": [0.15, 0.85], "radius": 0.12}}}],
+               "network": [null, {"loss": {"model": "bernoulli", "p": 0.3}, "range": 0.4}]},
+      "seeds": [1, 2]})"));
+  const auto results = run_sweep(spec, dir / "out", SweepOptions{2, false, 0, 1, true});
+  REQUIRE(results.size() == 4);
+  for (const SweepResult& r : results)
+    REQUIRE_FALSE(r.error);
+  // Ideal: no messages, no stale information, no disagreement, always connected.
+  for (const SweepResult* r : {&results[0], &results[1]}) {
+    CHECK(r->number("messages_delivered") == 0);
+    CHECK(r->number("info_age_mean") == 0);
+    CHECK(r->number("area_claimed_by_several") == 0);
+    CHECK(r->number("connected_fraction") == 1);
+  }
+  // Lossy and short-ranged: messages go astray, information ages, cells disagree.
+  for (const SweepResult* r : {&results[2], &results[3]}) {
+    CHECK(r->number("messages_delivered") > 0);
+    CHECK(r->number("messages_lost") > 0);
+    CHECK(r->number("info_age_mean") > 0);
+    CHECK(r->number("info_age_max") >= r->number("info_age_mean"));
+    CHECK(r->number("area_claimed_by_several") + r->number("area_claimed_by_none") > 0);
+    CHECK(r->number("connected_fraction") >= 0);
+    CHECK(r->number("connected_fraction") <= 1);
+  }
+  // Two seeds, two deployments: different runs even with the ideal network.
+  CHECK(results[0].fingerprint() != results[1].fingerprint());
+  // --keep-series kept every run's samples, and a merge brings them along.
+  for (std::size_t i = 0; i < 4; ++i)
+    CHECK(fs::exists(dir / "out" / "runs" / fmt::format("{}.metrics.csv", i)));
+  SweepSpec merged;
+  merge_sweeps({dir / "out"}, dir / "merged", merged);
+  CHECK(fs::exists(dir / "merged" / "runs" / "3.metrics.csv"));
 }

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -233,4 +234,83 @@ TEST_CASE("random environments are valid scenarios, the same for the same seed",
   RandomEnvironmentSpec bad;
   bad.robots = 0;
   CHECK_THROWS_AS(random_environment(bad), std::invalid_argument);
+}
+
+TEST_CASE("robots drawn per seed: each seed a deployment, the same on every load",
+          "[scenario][deployment]") {
+  const std::string d = R"("density": {"type": "uniform"})";
+  const auto load = [&](const std::string& robots, std::uint64_t seed) {
+    return load_scenario(write("drawn.json", "{" + kSquare + ", " + d + R"(, "robots": )" + robots +
+                                                 R"(, "seed": )" + std::to_string(seed) + "}"));
+  };
+  const std::string uniform = R"({"count": 12, "start": {"uniform": true}})";
+  const Scenario a = load(uniform, 1), again = load(uniform, 1), b = load(uniform, 2);
+  REQUIRE(a.robot_positions.size() == 12);
+  CHECK(a.robot_positions == again.robot_positions);
+  CHECK(a.robot_positions != b.robot_positions);
+  for (Vec2 p : a.robot_positions)
+    CHECK(a.environment->contains(p));
+  // The default separation: 1/20 of sqrt(area / count).
+  const double sep = 0.05 * std::sqrt(15.0 / 12.0);
+  for (std::size_t i = 0; i < 12; ++i) {
+    for (std::size_t j = 0; j < i; ++j)
+      CHECK(distance(a.robot_positions[i], a.robot_positions[j]) >= sep);
+  }
+  // A cluster in a corner, as in the paper's figures, and a region.
+  const Scenario c =
+      load(R"({"count": 5, "start": {"cluster": {"center": [0.3, 3.7], "radius": 0.25}},
+               "separation": 0.05})",
+           3);
+  for (Vec2 p : c.robot_positions)
+    CHECK(distance(p, {0.3, 3.7}) <= 0.25);
+  const Scenario r =
+      load(R"({"count": 6, "start": {"region": [[2.5, 0], [4, 0], [4, 4], [2.5, 4]]}})", 3);
+  for (Vec2 p : r.robot_positions)
+    CHECK(p.x >= 2.5);
+  // Jitter moves given robots, by seed.
+  const std::string given = R"({"positions": [[0.5, 0.5], [3, 3]], "jitter": 0.05})";
+  const Scenario j1 = load(given, 1), j2 = load(given, 2);
+  CHECK(j1.robot_positions != j2.robot_positions);
+  CHECK(distance(j1.robot_positions[0], {0.5, 0.5}) < 0.5);
+  // Another seed redraws (as a sweep's seeds and covsim run --seed do).
+  CHECK(with_seed(a, 2).robot_positions == b.robot_positions);
+  CHECK(with_seed(a, 1).robot_positions == a.robot_positions);
+}
+
+TEST_CASE("drawn robots and density means are checked", "[scenario][deployment]") {
+  const std::string d = R"("density": {"type": "uniform"})";
+  const auto robots = [&](const std::string& r, const std::string& fragment,
+                          const std::string& seed = R"(, "seed": 1)") {
+    expect_error("{" + kSquare + ", " + d + R"(, "robots": )" + r + seed + "}", fragment);
+  };
+  robots(R"({"positions": [[0.5, 0.5]], "count": 3})",
+         "$.robots: expected \"positions\" or \"count\"");
+  robots(R"({"count": 3})", "$.robots: missing required key \"start\"");
+  robots(R"({"count": 3, "start": {}})",
+         "$.robots.start: expected exactly one of \"uniform\", \"region\" and \"cluster\"");
+  robots(R"({"count": 3, "start": {"uniform": true, "cluster": {"center": [0, 0], "radius": 1}}})",
+         "expected exactly one of");
+  robots(R"({"count": 0, "start": {"uniform": true}})",
+         "$.robots.count: expected 1 to 100000 robots");
+  robots(R"({"count": 3, "start": {"cluster": {"center": [3, 3], "radius": -1}}})",
+         "$.robots.start.cluster.radius: expected a positive number");
+  robots(R"({"count": 50, "start": {"cluster": {"center": [0.5, 0.5], "radius": 0.1}},
+            "separation": 0.1})",
+         "$.robots.start: placed");
+  robots(R"({"positions": [[0.5, 0.5]], "start": {"uniform": true}})",
+         "$.robots.start: \"start\" goes with \"count\"");
+  robots(R"({"count": 3, "start": {"uniform": true}, "jitter": 0.1})",
+         "$.robots.jitter: \"jitter\" goes with \"positions\"");
+  robots(R"({"count": 3, "start": {"region": [[0, 0], [1, 1], [1, 0], [0, 1]]}})",
+         "$.robots.start.region: expected a simple polygon");
+  robots(R"({"count": 3, "start": {"uniform": true}})", "need the scenario's \"seed\"", "");
+  // A Gaussian mean drawn per seed needs a seed too; with one, it lands in Ω.
+  const std::string mixture =
+      R"("density": {"type": "gaussian_mixture", "components": [{"mean": null, "sigma": 0.5, "weight": 1}]})";
+  expect_error("{" + kSquare + ", " + mixture + "}", "a null mean is drawn from the scenario's");
+  const Scenario s1 =
+      load_scenario(write("m.json", "{" + kSquare + ", " + mixture + R"(, "seed": 1})"));
+  const Scenario s2 =
+      load_scenario(write("m.json", "{" + kSquare + ", " + mixture + R"(, "seed": 2})"));
+  CHECK((*s1.density)({0.5, 0.5}) != (*s2.density)({0.5, 0.5}));
 }

@@ -1,0 +1,89 @@
+#include "scenarios/scenario_override.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+#include "scenarios/json_reader.hpp"
+#include "scenarios/scenario_error.hpp"
+
+namespace covsim {
+
+std::string dotted_path_error(std::string_view path) {
+  if (path.empty() || path.front() == '.' || path.back() == '.' ||
+      path.find("..") != std::string_view::npos ||
+      path.find_first_of(" \t\n=[]\"") != std::string_view::npos) {
+    return fmt::format("\"{}\" is not a dotted path like \"network.loss.p\"", path);
+  }
+  return "";
+}
+
+void set_dotted(nlohmann::json& j, const std::string& dotted, const nlohmann::json& value) {
+  nlohmann::json* at = &j;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t dot = dotted.find('.', start);
+    const std::string key =
+        dotted.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (!at->is_object()) *at = nlohmann::json::object();
+    if (dot == std::string::npos) {
+      (*at)[key] = value;
+      return;
+    }
+    at = &(*at)[key];
+    start = dot + 1;
+  }
+}
+
+ScenarioOverride parse_override(std::string_view text, std::string_view option) {
+  ScenarioOverride o;
+  o.as_typed = fmt::format("{} {}", option, text);
+  const std::size_t eq = text.find('=');
+  if (eq == std::string_view::npos)
+    throw std::invalid_argument(fmt::format("{}: expected PATH=VALUE", o.as_typed));
+  o.path = std::string(text.substr(0, eq));
+  if (const std::string e = dotted_path_error(o.path); !e.empty())
+    throw std::invalid_argument(fmt::format("{}: {}", o.as_typed, e));
+  const std::string value(text.substr(eq + 1));
+  try {
+    o.value = nlohmann::json::parse(value);
+  } catch (const nlohmann::json::parse_error&) {
+    const bool word = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+    });
+    if (!word) {
+      throw std::invalid_argument(fmt::format(
+          "{}: the value is neither JSON nor a plain word (quote text with spaces as JSON: "
+          "'\"...\"')",
+          o.as_typed));
+    }
+    o.value = value;
+  }
+  return o;
+}
+
+Scenario load_scenario(const std::filesystem::path& file,
+                       const std::vector<ScenarioOverride>& overrides) {
+  nlohmann::json j = read_json_file(file);
+  for (const ScenarioOverride& o : overrides)
+    set_dotted(j, o.path, o.value);
+  try {
+    return parse_scenario(j, file.string(), file.parent_path());
+  } catch (const ScenarioError& e) {
+    // The last override at, under or above the error's place is the one to blame.
+    for (auto o = overrides.rbegin(); o != overrides.rend(); ++o) {
+      const std::string at = "$." + o->path;
+      const auto under = [](const std::string& a, const std::string& b) {
+        return a.size() >= b.size() && a.compare(0, b.size(), b) == 0 &&
+               (a.size() == b.size() || a[b.size()] == '.' || a[b.size()] == '[');
+      };
+      if (!e.path().empty() && (under(e.path(), at) || (e.path() != "$" && under(at, e.path()))))
+        throw ScenarioError(o->as_typed + ": " + e.file(), e.path(), e.detail());
+    }
+    throw;
+  }
+}
+
+}  // namespace covsim
