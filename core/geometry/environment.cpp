@@ -272,12 +272,18 @@ std::optional<RayHit> Environment::ray_cast(Vec2 origin, Vec2 direction, double 
   for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
     if (ts[k + 1] - ts[k] <= 0.0) continue;
     if (!contains(origin + (0.5 * (ts[k] + ts[k + 1])) * (end - origin))) {
-      const Vec2 hit = origin + ts[k] * (end - origin);
+      // A split where the ray only passed near a vertex may lie past the wall already (the
+      // part before it was within the tolerance): the last split still in Ω is the exit.
+      std::size_t at = k;
+      while (at > 0 && !contains(origin + ts[at] * (end - origin)))
+        --at;
+      const Vec2 hit = origin + ts[at] * (end - origin);
       // The edge hit: the one nearest the exit point.
       std::uint32_t edge = 0;
       double best = INFINITY;
       Box hb;
-      hb.add(hit);
+      hb.add(hit - Vec2{1e3 * tolerance_, 1e3 * tolerance_});
+      hb.add(hit + Vec2{1e3 * tolerance_, 1e3 * tolerance_});
       edge_index_.query(hb, [&](std::uint32_t e) {
         const double d = norm2(project_to_segment(hit, boundary_[e].a, boundary_[e].b).point - hit);
         if (d < best) {
@@ -285,7 +291,7 @@ std::optional<RayHit> Environment::ray_cast(Vec2 origin, Vec2 direction, double 
           edge = e;
         }
       });
-      return RayHit{hit, ts[k] * reach, edge};
+      return RayHit{hit, ts[at] * reach, edge};
     }
   }
   return std::nullopt;

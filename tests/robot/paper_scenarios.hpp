@@ -2,6 +2,7 @@
 // What the controller tests share: the paper's scenario files, and an observer that checks
 // every motion step against Ω.
 #include <map>
+#include <memory>
 #include <string>
 
 #include "analysis/coverage_run.hpp"
@@ -16,11 +17,11 @@ inline Scenario paper(const std::string& name) {
 // Counts motion steps and those that leave Ω, and keeps the largest gap between a robot
 // and its virtual generator.
 struct MotionChecker final : CoverageObserver {
-  const Environment* env;
+  std::shared_ptr<const Environment> env;  // shared: the scenario may be a temporary
   std::map<std::uint32_t, Vec2> last;
   std::size_t steps = 0, outside = 0;
   double max_real_virtual_gap = 0.0;
-  explicit MotionChecker(const Scenario& s) : env(s.environment.get()) {
+  explicit MotionChecker(const Scenario& s) : env(s.environment) {
     for (std::uint32_t i = 0; i < s.robot_positions.size(); ++i)
       last[i] = s.robot_positions[i];
   }
