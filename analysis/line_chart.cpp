@@ -1,132 +1,86 @@
 #include "analysis/line_chart.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/xml_escape.hpp"
+#include "analysis/axes.hpp"
 
 namespace covsim {
 
 namespace {
-// A tick step of 1, 2 or 5 times a power of ten, giving about `ticks` ticks.
-double tick_step(double range, int ticks) {
-  const double raw = range / ticks;
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0}) {
-    if (m * p >= raw) return m * p;
-  }
-  return 10 * p;
-}
-
-constexpr const char* kPalette[] = {"#d62728", "#1f5fbf", "#2ca02c", "#ff7f0e",
-                                    "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"};
+constexpr std::uint32_t kPalette[] = {0xd62728, 0x1f5fbf, 0x2ca02c, 0xff7f0e,
+                                      0x9467bd, 0x8c564b, 0xe377c2, 0x7f7f7f};
 }  // namespace
 
-std::string line_chart_svg(const std::string& title, const std::string& x_label,
-                           const std::string& y_label, const std::vector<ChartSeries>& series) {
-  const double w = 680, h = 420, left = 80, right = 20, top = 40, bottom = 50;
+std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
+  const double w = 680, h = 420, left = 80, right = 20, top = 40, bottom = 56;
   // The legend goes under the chart, a row per series, so it never hides a line.
-  const double legend_row = 16, total_h = h + 8 + legend_row * static_cast<double>(series.size());
-  double x0 = INFINITY, x1 = -INFINITY, y0 = 0.0, y1 = -INFINITY;
-  for (const ChartSeries& s : series) {
+  const double legend_row = 16;
+  const double total_h = h + 8 + legend_row * static_cast<double>(chart.series.size());
+  Box data{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
+  const auto take = [&](double x, double y) {
+    if (!std::isfinite(x) || !std::isfinite(y) || (chart.log_y && !(y > 0))) return;
+    data.lo = {std::min(data.lo.x, x), std::min(data.lo.y, y)};
+    data.hi = {std::max(data.hi.x, x), std::max(data.hi.y, y)};
+  };
+  for (const ChartSeries& s : chart.series) {
     for (const ChartPoint& p : s.points) {
-      x0 = std::min(x0, p.x);
-      x1 = std::max(x1, p.x);
-      y0 = std::min({y0, p.y, s.band ? p.lo : p.y});
-      y1 = std::max({y1, p.y, s.band ? p.hi : p.y});
+      take(p.x, p.y);
+      if (s.band) take(p.x, p.lo), take(p.x, p.hi);
     }
-    for (const auto& [x, y] : s.samples) {
-      if (!std::isfinite(x) || !std::isfinite(y)) continue;
-      x0 = std::min(x0, x);
-      x1 = std::max(x1, x);
-      y0 = std::min(y0, y);
-      y1 = std::max(y1, y);
-    }
+    for (const auto& [x, y] : s.samples)
+      take(x, y);
   }
-  if (!std::isfinite(x0)) x0 = 0, x1 = 1;
-  if (!(x1 > x0)) x1 = x0 + 1;
-  if (!std::isfinite(y1) || !(y1 > y0)) y1 = y0 + 1;
-  const double xs = tick_step(x1 - x0, 8), ys = tick_step(y1 - y0, 6);
-  x0 = std::floor(x0 / xs) * xs;
-  x1 = std::ceil(x1 / xs) * xs;
-  y0 = std::floor(y0 / ys) * ys;
-  y1 = std::ceil(y1 / ys) * ys;
-  const auto X = [&](double x) { return left + (w - left - right) * (x - x0) / (x1 - x0); };
-  const auto Y = [&](double y) { return h - bottom - (h - top - bottom) * (y - y0) / (y1 - y0); };
-  std::string out = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} "
-      "{1}\" "
-      "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"{0}\" height=\"{1}\" "
-      "fill=\"#ffffff\"/>\n",
-      w, total_h);
-  out += fmt::format("<text x=\"{:.1f}\" y=\"20\" font-size=\"14\">{}</text>\n", left,
-                     xml_escape(title));
-  for (double x = x0; x <= x1 + 1e-9 * xs; x += xs) {
-    out += fmt::format(
-        "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"#e0e0e0\"/>\n",
-        X(x), Y(y0), Y(y1));
-    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{:g}</text>\n", X(x),
-                       Y(y0) + 16, x);
-  }
-  for (double y = y0; y <= y1 + 1e-9 * ys; y += ys) {
-    out += fmt::format(
-        "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#e0e0e0\"/>\n",
-        X(x0), Y(y), X(x1));
-    out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{:g}</text>\n",
-                       X(x0) - 6, Y(y) + 4, y);
-  }
-  out += fmt::format(
-      "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
-      "stroke=\"#000\"/>\n",
-      X(x0), Y(y1), X(x1) - X(x0), Y(y0) - Y(y1));
-  for (std::size_t k = 0; k < series.size(); ++k) {
-    const ChartSeries& s = series[k];
-    const char* colour = kPalette[k % 8];
+  // Linear charts start at zero when their data are positive: costs and times compare.
+  if (!chart.log_y && data.lo.y > 0) data.lo.y = 0;
+  Canvas c(file, w, total_h);
+  c.rectangle({0, 0}, {w, total_h}, Colour::hex(0xffffff));
+  const Axes a = chart_axes(data, {left, top}, {w - right, h - bottom}, chart.log_y);
+  const Colour ink = Colour::hex(0x222222);
+  draw_axes(c, a, chart.x_label, chart.y_label, true);
+  c.text({left, 22}, chart.title, 13, ink);
+  const auto visible = [&](double x, double y) {
+    return std::isfinite(x) && std::isfinite(y) && (!chart.log_y || y > 0);
+  };
+  c.push_clip({{a.lo, {a.hi.x, a.lo.y}, a.hi, {a.lo.x, a.hi.y}}});
+  for (std::size_t k = 0; k < chart.series.size(); ++k) {
+    const ChartSeries& s = chart.series[k];
+    const std::uint32_t colour = kPalette[k % 8];
     if (s.band && !s.points.empty()) {
-      std::string band;
+      std::vector<Vec2> band;
       for (const ChartPoint& p : s.points)
-        band += fmt::format("{:.2f},{:.2f} ", X(p.x), Y(p.hi));
+        if (visible(p.x, p.hi)) band.push_back(a.to_px({p.x, p.hi}));
       for (auto p = s.points.rbegin(); p != s.points.rend(); ++p)
-        band += fmt::format("{:.2f},{:.2f} ", X(p->x), Y(p->lo));
-      out += fmt::format(
-          "<polygon points=\"{}\" fill=\"{}\" fill-opacity=\"0.18\" stroke=\"none\"/>\n", band,
-          colour);
+        if (visible(p->x, p->lo)) band.push_back(a.to_px({p->x, p->lo}));
+      c.fill({band}, Colour::hex(colour, 0.18));
     }
-    for (const auto& [x, y] : s.samples) {
-      if (!std::isfinite(x) || !std::isfinite(y)) continue;
-      out += fmt::format(
-          "<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2\" fill=\"{}\" fill-opacity=\"0.25\"/>\n", X(x),
-          Y(y), colour);
-    }
-    std::string pts;
+    for (const auto& [x, y] : s.samples)
+      if (visible(x, y)) c.circle(a.to_px({x, y}), 2.0, Colour::hex(colour, 0.25));
+    std::vector<Vec2> line;
     for (const ChartPoint& p : s.points)
-      pts += fmt::format("{:.2f},{:.2f} ", X(p.x), Y(p.y));
-    out +=
-        fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{} points=\"{}\"/>\n",
-                    colour, s.dashed ? " stroke-dasharray=\"6,4\"" : "", pts);
-    if (s.points.size() < 40) {
-      for (const ChartPoint& p : s.points) {
-        out += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"2.5\" fill=\"{}\"/>\n", X(p.x),
-                           Y(p.y), colour);
-      }
-    }
-    const double ly = h + 4 + legend_row * static_cast<double>(k);
-    out += fmt::format(
-        "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" "
-        "stroke-width=\"2\"{4}/>"
-        "<text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>\n",
-        left, ly, left + 25, colour, s.dashed ? " stroke-dasharray=\"6,4\"" : "", left + 32, ly + 4,
-        xml_escape(s.label));
+      if (visible(p.x, p.y)) line.push_back(a.to_px({p.x, p.y}));
+    const Stroke stroke{Colour::hex(colour), 2.0,
+                        s.dashed ? std::vector{6.0, 4.0} : std::vector<double>{}};
+    c.polyline(line, stroke);
+    if (s.points.size() < 40)
+      for (const Vec2& p : line)
+        c.circle(p, 2.5, Colour::hex(colour));
   }
-  out += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\">{}</text>\n",
-                     (X(x0) + X(x1)) / 2, h - 12, xml_escape(x_label));
-  out += fmt::format(
-      "<text x=\"18\" y=\"{0:.1f}\" text-anchor=\"middle\" transform=\"rotate(-90 18 "
-      "{0:.1f})\">{1}</text>\n",
-      (Y(y0) + Y(y1)) / 2, xml_escape(y_label));
-  return out + "</svg>\n";
+  if (chart.marker) {
+    const double px = a.to_px({chart.marker->first, a.data.lo.y}).x;
+    c.line({px, a.lo.y}, {px, a.hi.y}, Stroke{ink, 1.0, {3.0, 3.0}});
+    c.text({px - 4, a.lo.y + 14}, chart.marker->second, 10, ink, Align::right);
+  }
+  c.pop_clip();
+  for (std::size_t k = 0; k < chart.series.size(); ++k) {
+    const ChartSeries& s = chart.series[k];
+    const double ly = h + 4 + legend_row * static_cast<double>(k);
+    c.line({left, ly}, {left + 25, ly},
+           Stroke{Colour::hex(kPalette[k % 8]), 2.0,
+                  s.dashed ? std::vector{6.0, 4.0} : std::vector<double>{}});
+    c.text({left + 32, ly + 4}, s.label, 11, ink);
+  }
+  return c.finish();
 }
 
 }  // namespace covsim

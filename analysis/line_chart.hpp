@@ -1,8 +1,12 @@
 #pragma once
-// A line chart as SVG: series of (x, y) with an optional band [lo, hi] around each line.
+// A line chart: series of (x, y) with an optional band [lo, hi] around each line and the
+// individual runs as faint dots, drawn through the Canvas in any figure format.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "analysis/canvas.hpp"
 
 namespace covsim {
 
@@ -19,7 +23,14 @@ struct ChartSeries {
   std::vector<std::pair<double, double>> samples;
 };
 
-std::string line_chart_svg(const std::string& title, const std::string& x_label,
-                           const std::string& y_label, const std::vector<ChartSeries>& series);
+struct LineChart {
+  std::string title, x_label, y_label;
+  std::vector<ChartSeries> series;
+  bool log_y = false;
+  // A vertical line marking an x (the convergence time, say), with its label.
+  std::optional<std::pair<double, std::string>> marker;
+};
+
+std::string draw_line_chart(const LineChart& chart, const FigureFile& file);
 
 }  // namespace covsim

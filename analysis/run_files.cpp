@@ -82,12 +82,10 @@ nlohmann::json portable_scenario(const Scenario& scenario, const fs::path& dir) 
   return j;
 }
 
-std::vector<std::vector<Vec2>> RunFiles::paths(Vec2 TrajectoryRow::*point) const {
-  std::vector<std::vector<Vec2>> out(outcome.robots.size());
-  for (const TrajectoryRow& r : trajectory) {
-    auto& p = out.at(r.robot);
-    if (p.empty() || !(p.back() == r.*point)) p.push_back(r.*point);
-  }
+std::vector<RobotTrack> RunFiles::tracks() const {
+  std::vector<RobotTrack> out(outcome.robots.size());
+  for (const TrajectoryRow& r : trajectory)
+    out.at(r.robot).push(r.t, r.position, r.virtual_generator, r.virtual_target, r.real_target);
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/coverage_run.hpp"
+#include "analysis/robot_track.hpp"
 #include "analysis/run_recorder.hpp"
 
 namespace covsim {
@@ -22,14 +23,8 @@ struct RunFiles {
   CoverageOutcome outcome;  // what final.json holds
   std::vector<TrajectoryRow> trajectory;
   std::vector<MetricsSample> samples;  // the cost columns of metrics.csv
-  // Each robot's path and its virtual generator's, as RunRecorder keeps them.
-  std::vector<std::vector<Vec2>> real_paths() const { return paths(&TrajectoryRow::position); }
-  std::vector<std::vector<Vec2>> virtual_paths() const {
-    return paths(&TrajectoryRow::virtual_generator);
-  }
-
- private:
-  std::vector<std::vector<Vec2>> paths(Vec2 TrajectoryRow::*point) const;
+  // Each robot's track, as RunRecorder kept it.
+  std::vector<RobotTrack> tracks() const;
 };
 
 // The scenario as a run folder keeps it: the scenario's JSON with files it names made

@@ -6,27 +6,36 @@
 
 namespace covsim {
 
-RunRecorder::RunRecorder(const std::filesystem::path& dir, const std::vector<Vec2>& starts)
-    : trajectory_(dir / "trajectory.csv"), metrics_(dir / "metrics.csv") {
+RunRecorder::RunRecorder(const std::filesystem::path& dir, const std::vector<Vec2>& starts,
+                         double trajectory_period)
+    : trajectory_(dir / "trajectory.csv"),
+      metrics_(dir / "metrics.csv"),
+      period_(trajectory_period),
+      tracks_(starts.size()),
+      pending_(starts.size()) {
   trajectory_buffer_ = "t,robot,x,y,vx,vy,tx,ty,rx,ry\n";
   metrics_buffer_ = csv_header(metrics_fields()) + "\n";
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const Vec2 s = starts[i];
-    fmt::format_to(std::back_inserter(trajectory_buffer_), "0,{},{},{},{},{},{},{},{},{}\n", i, s.x,
-                   s.y, s.x, s.y, s.x, s.y, s.x, s.y);
-    real_.push_back({starts[i]});
-    virtual_.push_back({starts[i]});
+    write(0.0, static_cast<std::uint32_t>(i), s, s, s, s);
   }
 }
 
+void RunRecorder::write(double t, std::uint32_t robot, Vec2 p, Vec2 v, Vec2 vt, Vec2 rt) {
+  fmt::format_to(std::back_inserter(trajectory_buffer_), "{},{},{},{},{},{},{},{},{},{}\n", t,
+                 robot, p.x, p.y, v.x, v.y, vt.x, vt.y, rt.x, rt.y);
+  tracks_[robot].push(t, p, v, vt, rt);
+}
+
 void RunRecorder::on_motion(SimTime t, const Robot& r) {
-  fmt::format_to(std::back_inserter(trajectory_buffer_), "{},{},{},{},{},{},{},{},{},{}\n",
-                 t.seconds(), r.id, r.position.x, r.position.y, r.virtual_generator.x,
-                 r.virtual_generator.y, r.virtual_target.x, r.virtual_target.y, r.real_target.x,
-                 r.real_target.y);
-  if (!(real_[r.id].back() == r.position)) real_[r.id].push_back(r.position);
-  if (!(virtual_[r.id].back() == r.virtual_generator))
-    virtual_[r.id].push_back(r.virtual_generator);
+  const double now = t.seconds();
+  RobotTrack& k = tracks_[r.id];
+  if (period_ > 0.0 && now - k.t.back() < period_) {
+    pending_[r.id] = {true, r.position, r.virtual_generator, r.virtual_target, r.real_target};
+    return;
+  }
+  pending_[r.id].set = false;
+  write(now, r.id, r.position, r.virtual_generator, r.virtual_target, r.real_target);
   flush(false);
 }
 
@@ -37,6 +46,13 @@ void RunRecorder::on_sample(SimTime t, const CoverageController& controller) {
 }
 
 void RunRecorder::on_finish(SimTime t, const CoverageController& c) {
+  // A thinned robot's last state, stamped with the end time (it stood there since its last
+  // step), so that rows stay in time order.
+  for (std::uint32_t i = 0; i < pending_.size(); ++i) {
+    const Pending& q = pending_[i];
+    if (q.set) write(t.seconds(), i, q.p, q.v, q.vt, q.rt);
+    pending_[i].set = false;
+  }
   const std::size_t before = sampler_.samples().size();
   sampler_.on_finish(t, c);
   if (sampler_.samples().size() > before) {

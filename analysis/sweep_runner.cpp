@@ -232,7 +232,8 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
 }
 
 std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const fs::path& out,
-                                      SweepSpec& merged) {
+                                      SweepSpec& merged, const std::string& group,
+                                      FigureFormat format) {
   if (dirs.empty()) throw std::runtime_error("nothing to merge");
   nlohmann::json resolved, first_build;
   for (const fs::path& d : dirs) {
@@ -296,7 +297,7 @@ std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const f
     for (std::size_t i = 0; i < total; ++i) {
       const fs::path series = d / "runs" / fmt::format("{}.metrics.csv", i);
       std::error_code ec;
-      if (fs::exists(series, ec))
+      if (fs::exists(series, ec) && !fs::equivalent(d, out, ec))
         fs::copy_file(series, out / "runs" / series.filename(),
                       fs::copy_options::overwrite_existing, ec);
     }
@@ -308,7 +309,7 @@ std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const f
   spec_file.commit();
   write_runs_csv(out / "runs.csv", merged, results);
   write_summary_csv(out / "summary.csv", merged, results);
-  write_sweep_plots(out, merged, results, "");
+  write_sweep_plots(out, merged, results, group, format);
   return results;
 }
 
@@ -382,9 +383,8 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
   f.commit();
 }
 
-std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& spec,
-                                        const std::vector<SweepResult>& results,
-                                        const std::string& group) {
+std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<SweepResult>& results,
+                                     const std::string& group) {
   std::optional<std::size_t> group_index;
   for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
     if (spec.parameters[q] == group) group_index = q;
@@ -392,7 +392,7 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
   if (!group.empty() && !group_index) {
     throw std::invalid_argument("--group: \"" + group + "\" is not a swept parameter");
   }
-  std::vector<fs::path> written;
+  std::vector<SweepChart> charts;
   const std::vector<SweepRun> runs = spec.runs();
   // Parameters that take more than one value: only these name the lines.
   std::vector<bool> varies(spec.parameters.size(), false);
@@ -442,15 +442,27 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
       const auto with_unit = [](const std::string& name, const std::string& unit) {
         return unit.empty() ? name : fmt::format("{} [{}]", name, unit);
       };
-      const fs::path file = dir / fmt::format("{}_vs_{}.svg", metric, spec.parameters[p]);
-      AtomicFile f(file);
-      f.stream() << line_chart_svg(
-          fmt::format("{} (mean, 95% confidence band; dots: runs)", metric),
-          with_unit(spec.parameters[p], scenario_key_unit(spec.parameters[p])),
-          with_unit(metric, run_field_unit(metric)), series);
-      f.commit();
-      written.push_back(file);
+      LineChart chart;
+      chart.title = fmt::format("{} (mean, 95% confidence band; dots: runs)", metric);
+      chart.x_label = with_unit(spec.parameters[p], scenario_key_unit(spec.parameters[p]));
+      chart.y_label = with_unit(metric, run_field_unit(metric));
+      chart.series = std::move(series);
+      charts.push_back({fmt::format("{}_vs_{}", metric, spec.parameters[p]), std::move(chart)});
     }
+  }
+  return charts;
+}
+
+std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& spec,
+                                        const std::vector<SweepResult>& results,
+                                        const std::string& group, FigureFormat format) {
+  std::vector<fs::path> written;
+  for (const SweepChart& c : sweep_charts(spec, results, group)) {
+    const fs::path file = dir / fmt::format("{}.{}", c.name, extension(format));
+    AtomicFile f(file);
+    f.stream() << draw_line_chart(c.chart, FigureFile{format, 0});
+    f.commit();
+    written.push_back(file);
   }
   return written;
 }

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/canvas.hpp"
+#include "analysis/line_chart.hpp"
 #include "analysis/sweep_spec.hpp"
 
 namespace covsim {
@@ -39,7 +41,9 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const std::filesystem:
 // sweep.json, runs.csv, summary.csv and plots, as one sweep of the whole would give.
 // Throws std::runtime_error if the folders hold different sweeps or runs are missing.
 std::vector<SweepResult> merge_sweeps(const std::vector<std::filesystem::path>& dirs,
-                                      const std::filesystem::path& out, SweepSpec& merged_spec);
+                                      const std::filesystem::path& out, SweepSpec& merged_spec,
+                                      const std::string& group = "",
+                                      FigureFormat format = FigureFormat::svg);
 
 // The metrics summarised per setting, in this order, as they appear in summary.csv: the
 // run fields marked summarized.
@@ -49,13 +53,21 @@ void write_runs_csv(const std::filesystem::path& file, const SweepSpec& spec,
                     const std::vector<SweepResult>& results);
 void write_summary_csv(const std::filesystem::path& file, const SweepSpec& spec,
                        const std::vector<SweepResult>& results);
-// One SVG per (metric, numeric parameter): mean with a 95% confidence band, one line per
-// value of `group` (a swept parameter; the others pooled), or without one, per combination
-// of the other varying parameters. Returns the files written. Throws std::invalid_argument
-// for a group that is not swept.
+// One chart per (metric, numeric parameter), named "<metric>_vs_<parameter>": mean with a
+// 95% confidence band and the runs as dots, one line per value of `group` (a swept
+// parameter; the others pooled), or without one, per combination of the other varying
+// parameters. Throws std::invalid_argument for a group that is not swept.
+struct SweepChart {
+  std::string name;
+  LineChart chart;
+};
+std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<SweepResult>& results,
+                                     const std::string& group = "");
+// The charts drawn as DIR/<name>.svg (or .pdf, .png). Returns the files written.
 std::vector<std::filesystem::path> write_sweep_plots(const std::filesystem::path& dir,
                                                      const SweepSpec& spec,
                                                      const std::vector<SweepResult>& results,
-                                                     const std::string& group = "");
+                                                     const std::string& group = "",
+                                                     FigureFormat format = FigureFormat::svg);
 
 }  // namespace covsim

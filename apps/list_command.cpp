@@ -1,8 +1,10 @@
 // `covsim list [planners|laws|loss|delay|densities] [--names]`: every registered component
 // with its description and parameters (kind, default, unit, bounds), in the spirit of ns-3's
-// attribute listing; `--names` prints the names alone, one per line, for scripts.
+// attribute listing; `--names` prints the names alone, one per line, for scripts, and
+// `--reads-range` keeps the planners whose steps depend on the sensor's range.
 #include <fmt/format.h>
 
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -19,17 +21,27 @@
 namespace covsim::app {
 
 namespace {
+// A line on what the entry reads besides its parameters ("" for none).
+template <class Entry>
+std::string reads(const Entry&) {
+  return "";
+}
+std::string reads(const PlannerEntry& e) {
+  return e.reads_range ? "    reads the range sensor: its steps depend on sensor.range\n" : "";
+}
+
 template <class Entry>
 void print(const Registry<Entry>& r, const std::string& heading, const std::string& key,
-           bool names_only) {
+           bool names_only, const std::function<bool(const Entry&)>& keep = {}) {
   if (names_only) {
     for (const Entry& e : r.entries())
-      std::cout << e.name << '\n';
+      if (!keep || keep(e)) std::cout << e.name << '\n';
     return;
   }
   std::cout << fmt::format("{} ({}):\n", heading, key);
   for (const Entry& e : r.entries()) {
-    std::cout << fmt::format("  {}: {}\n", e.name, e.description);
+    if (keep && !keep(e)) continue;
+    std::cout << fmt::format("  {}: {}\n", e.name, e.description) << reads(e);
     if (e.params.empty())
       std::cout << "    (no parameters)\n";
     else
@@ -42,6 +54,7 @@ void add_list_command(CLI::App& app) {
   struct Options {
     std::string what;
     bool names = false;
+    bool reads_range = false;
     std::vector<std::string> plugins;
   };
   auto o = std::make_shared<Options>();
@@ -50,16 +63,24 @@ void add_list_command(CLI::App& app) {
   cmd->add_option("WHAT", o->what, "planners, laws, loss, delay or densities (default: all)")
       ->check(CLI::IsMember({"planners", "laws", "loss", "delay", "densities"}));
   cmd->add_flag("--names", o->names, "Names only, one per line");
+  cmd->add_flag("--reads-range", o->reads_range,
+                "Planners only: those whose steps depend on the range sensor's range");
   add_plugin_option(cmd, o->plugins);
   cmd->callback([o] {
     load_plugins(o->plugins);
     const bool all = o->what.empty();
     if (all && o->names) throw InputError("list: --names needs WHAT (planners, laws, ...)");
+    if (o->reads_range && o->what != "planners")
+      throw InputError(
+          "list: --reads-range applies to planners only (list planners --reads-range)");
     const auto gap = [&] {
       if (all) std::cout << '\n';
     };
     if (all || o->what == "planners")
-      print(planner_registry(), "planners", "\"planner\": {\"type\"}", o->names), gap();
+      print<PlannerEntry>(planner_registry(), "planners", "\"planner\": {\"type\"}", o->names,
+                          o->reads_range ? [](const PlannerEntry& e) { return e.reads_range; }
+                                         : std::function<bool(const PlannerEntry&)>{}),
+          gap();
     if (all || o->what == "laws")
       print(coverage_law_registry(), "coverage laws", "\"controller\": {\"type\"}", o->names),
           gap();

@@ -1,5 +1,6 @@
 // `covsim merge DIR... --out DIR`: combines the folders of a sweep's shards into the
-// runs.csv, summary.csv and plots a single run of the whole sweep gives.
+// runs.csv, summary.csv and plots a single run of the whole sweep gives. With one folder and
+// --out the same folder it redraws the plots (--format, --group) from the runs kept there.
 #include <fmt/format.h>
 
 #include <memory>
@@ -16,18 +17,25 @@ void add_merge_command(CLI::App& app) {
   struct Options {
     std::vector<std::string> dirs;
     std::string out;
+    std::string group;
+    std::string format = "svg";
   };
   auto opts = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("merge", "Combine the output folders of a sweep's shards");
   cmd->add_option("DIR", opts->dirs, "Output folders of covsim sweep --shard")->required();
   cmd->add_option("--out", opts->out, "Folder for the combined results")->required();
+  cmd->add_option("--group", opts->group, "Plot one line per value of this swept parameter");
+  cmd->add_option("--format", opts->format, "Plots as svg, pdf or png")
+      ->check(CLI::IsMember({"svg", "pdf", "png"}))
+      ->capture_default_str();
   cmd->callback([opts] {
     std::vector<std::filesystem::path> dirs(opts->dirs.begin(), opts->dirs.end());
     SweepSpec spec;
     std::vector<SweepResult> results;
     try {
-      results = merge_sweeps(dirs, opts->out, spec);
-    } catch (const std::runtime_error& e) {
+      results =
+          merge_sweeps(dirs, opts->out, spec, opts->group, *parse_figure_format(opts->format));
+    } catch (const std::exception& e) {  // runtime_error, or invalid_argument for --group
       throw InputError(e.what());
     }
     fmt::print("merged {} runs from {} folders into {}/runs.csv and {}/summary.csv\n",

@@ -1,7 +1,8 @@
-// `covsim plot DIR`: redraws a run's scene.svg and cost.svg from its output files, and
-// writes DIR/replay.html, a page that plays the run back.
+// `covsim plot DIR`: redraws a run's scene and cost figures (SVG, PDF or PNG) from its output
+// files, writes DIR/replay.html, a page that plays the run back, and on request a video.
 #include <fmt/format.h>
 
+#include <charconv>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -9,33 +10,111 @@
 #include "analysis/figures.hpp"
 #include "analysis/replay_html.hpp"
 #include "analysis/run_files.hpp"
+#include "analysis/run_video.hpp"
 #include "apps/commands.hpp"
+#include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
 #include "core/atomic_file.hpp"
 
 namespace covsim::app {
 
+namespace {
+// A comma-separated list of numbers, each checked by `parse`; errors name the option.
+template <class T>
+std::vector<T> number_list(const std::string& text, const std::string& option,
+                           const std::string& expected) {
+  std::vector<T> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    T v{};
+    const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), v);
+    if (item.empty() || ec != std::errc() || end != item.data() + item.size() ||
+        (std::is_floating_point_v<T> && !std::isfinite(static_cast<double>(v))))
+      throw InputError(fmt::format("{}: expected {}, found \"{}\"", option, expected, text));
+    out.push_back(v);
+    start = comma + 1;
+  }
+  return out;
+}
+}  // namespace
+
 void add_plot_command(CLI::App& app) {
-  auto dir = std::make_shared<std::string>();
-  auto frames = std::make_shared<std::size_t>(1500);
+  struct Options {
+    std::string dir, format = "svg", title, window, robots, video;
+    std::size_t frames = 1500;
+    bool log_cost = false;
+    int png_width = 0;
+    VideoOptions video_options;
+    std::vector<std::string> plugins;
+  };
+  auto o = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
-      "plot", "Redraw a run's scene.svg and cost.svg, and write replay.html to play it back");
-  cmd->add_option("DIR", *dir, "Output directory of covsim run")->required();
-  cmd->add_option("--frames", *frames, "Most frames in replay.html")->capture_default_str();
-  auto plugins = std::make_shared<std::vector<std::string>>();
-  add_plugin_option(cmd, *plugins);
-  cmd->callback([dir, frames, plugins] {
-    load_plugins(*plugins);
-    const std::filesystem::path d = *dir;
+      "plot", "Redraw a run's scene and cost figures, write replay.html, and make videos");
+  cmd->add_option("DIR", o->dir, "Output directory of covsim run")->required();
+  cmd->add_option("--format", o->format, "Figures as svg, pdf or png")
+      ->check(CLI::IsMember({"svg", "pdf", "png"}))
+      ->capture_default_str();
+  cmd->add_option("--title", o->title, "The scene's title (default: scenario name and outcome)");
+  cmd->add_option("--time-window", o->window, "T0,T1: draw the paths between T0 and T1 s");
+  cmd->add_option("--robots", o->robots, "I,J,...: draw only these robots' paths and marks");
+  cmd->add_flag("--log-cost", o->log_cost, "The cost figure on a log scale");
+  cmd->add_option("--png-width", o->png_width,
+                  "PNG figures this many pixels wide (default: two pixels per point)")
+      ->check(CLI::Range(64, 16384));
+  cmd->add_option("--frames", o->frames, "Most frames in replay.html")
+      ->check(CLI::Range(std::size_t{2}, std::size_t{1000000}))
+      ->capture_default_str();
+  cmd->add_option("--video", o->video, "Also encode the run as a video (FILE.mp4 or FILE.gif)");
+  cmd->add_option("--fps", o->video_options.fps, "Video frames per second")
+      ->check(CLI::Range(1.0, 240.0))
+      ->capture_default_str();
+  cmd->add_option("--speed", o->video_options.speedup,
+                  "Simulated seconds per second of video (default: the run in about 20 s)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--video-width", o->video_options.width, "Video width in pixels")
+      ->check(CLI::Range(160, 3840))
+      ->capture_default_str();
+  add_plugin_option(cmd, o->plugins);
+  cmd->callback([o] {
+    load_plugins(o->plugins);
+    SceneOptions scene_options{o->title, std::nullopt, {}};
+    if (!o->window.empty()) {
+      const auto w = number_list<double>(o->window, "--time-window", "T0,T1 in seconds, T0 < T1");
+      if (w.size() != 2 || !(w[0] < w[1]) || w[0] < 0)
+        throw InputError(fmt::format(
+            "--time-window: expected T0,T1 in seconds with 0 <= T0 < T1, found \"{}\"", o->window));
+      scene_options.time_window = std::pair{w[0], w[1]};
+    }
+    if (!o->robots.empty())
+      scene_options.robots =
+          number_list<std::uint32_t>(o->robots, "--robots", "robot IDs such as 1,4,7");
+    const std::filesystem::path d = o->dir;
     const RunFiles run = read_run_files(d);
-    AtomicFile scene(d / "scene.svg"), cost(d / "cost.svg"), replay(d / "replay.html");
-    scene.stream() << scene_svg(run.scenario, run.outcome, run.real_paths(), run.virtual_paths());
-    cost.stream() << cost_svg(run.samples);
-    replay.stream() << replay_html(run, *frames);
+    for (std::uint32_t id : scene_options.robots)
+      if (id >= run.outcome.robots.size())
+        throw InputError(fmt::format("--robots: robot {} does not exist (the run has {}: 0 to {})",
+                                     id, run.outcome.robots.size(), run.outcome.robots.size() - 1));
+    const FigureFile file{*parse_figure_format(o->format), o->png_width};
+    const std::string ext(extension(file.format));
+    AtomicFile scene(d / ("scene." + ext)), cost(d / ("cost." + ext)), replay(d / "replay.html");
+    scene.stream() << scene_figure(run.scenario, run.outcome, run.tracks(), scene_options, file);
+    cost.stream() << cost_figure(run.samples, run.outcome, o->log_cost, file);
+    replay.stream() << replay_html(run, o->frames);
+    if (!o->video.empty()) {
+      o->video_options.progress = true;
+      try {
+        write_run_video(run, o->video, o->video_options);
+      } catch (const std::runtime_error& e) {
+        throw InputError(fmt::format("--video: {}", e.what()));
+      }
+    }
     scene.commit();
     cost.commit();
     replay.commit();
-    fmt::print("wrote {0}/scene.svg, {0}/cost.svg, {0}/replay.html\n", d.string());
+    fmt::print("wrote {0}/scene.{1}, {0}/cost.{1}, {0}/replay.html{2}\n", d.string(), ext,
+               o->video.empty() ? "" : ", " + o->video);
   });
 }
 

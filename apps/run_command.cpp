@@ -1,5 +1,5 @@
 // `covsim run SCENARIO [--seed N] [--set PATH=VALUE ...] [--out DIR]`: runs the scenario and
-// writes scenario.json, final.json, trajectory.csv, metrics.csv, scene.svg and cost.svg into
+// writes scenario.json, final.json, trajectory.csv, metrics.csv, scene and cost figures into
 // DIR (default out/<scenario name>-<seed>), all of them only if the run succeeds.
 #include <fmt/format.h>
 
@@ -44,6 +44,7 @@ void add_run_command(CLI::App& app) {
     ScenarioOptions scenario;
     std::string out;
     std::string trace;
+    std::string format = "svg";
     std::vector<std::string> plugins;
   };
   auto opts = std::make_shared<Options>();
@@ -53,6 +54,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--out", opts->out,
                   "Output directory, created if missing (default out/<scenario name>-<seed>)");
   cmd->add_option("--trace", opts->trace, "Also write the event trace to this file");
+  cmd->add_option("--format", opts->format, "Figures (scene, cost) as svg, pdf or png")
+      ->check(CLI::IsMember({"svg", "pdf", "png"}))
+      ->capture_default_str();
   add_plugin_option(cmd, opts->plugins);
   cmd->callback([opts] {
     load_plugins(opts->plugins);
@@ -83,16 +87,19 @@ void add_run_command(CLI::App& app) {
           trace_header_for(scenario, fs::path(opts->scenario.file).parent_path());
       trace = std::make_unique<TraceWriter>(opts->trace, header);
     }
-    RunRecorder recorder(dir, scenario.robot_positions);
+    RunRecorder recorder(dir, scenario.robot_positions, scenario.recording.trajectory_period);
     const CoverageOutcome outcome = run_coverage(scenario, &recorder, trace.get());
 
-    AtomicFile final_file(dir / "final.json"), scene(dir / "scene.svg"), cost(dir / "cost.svg");
+    const FigureFormat format = *parse_figure_format(opts->format);
+    const std::string ext(extension(format));
+    AtomicFile final_file(dir / "final.json"), scene(dir / ("scene." + ext)),
+        cost(dir / ("cost." + ext));
     AtomicFile scenario_copy(dir / "scenario.json");
     scenario_copy.stream()
         << portable_scenario(scenario, fs::path(opts->scenario.file).parent_path()).dump(2) << "\n";
     final_file.stream() << final_json(outcome);
-    scene.stream() << scene_svg(scenario, outcome, recorder.real_paths(), recorder.virtual_paths());
-    cost.stream() << cost_svg(recorder.samples());
+    scene.stream() << scene_figure(scenario, outcome, recorder.tracks(), {}, FigureFile{format, 0});
+    cost.stream() << cost_figure(recorder.samples(), outcome, false, FigureFile{format, 0});
     recorder.commit();
     scenario_copy.commit();
     final_file.commit();
@@ -120,8 +127,8 @@ void add_run_command(CLI::App& app) {
     }
     fmt::print(
         "wrote {0}/scenario.json, {0}/final.json, {0}/trajectory.csv, {0}/metrics.csv, "
-        "{0}/scene.svg, {0}/cost.svg\n",
-        dir.string());
+        "{0}/scene.{1}, {0}/cost.{1}\n",
+        dir.string(), extension(*parse_figure_format(opts->format)));
   });
 }
 

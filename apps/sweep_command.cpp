@@ -1,6 +1,6 @@
 // `covsim sweep SWEEP --out DIR --jobs N [--shard K/N]`: every (setting, seed) of a sweep
-// file as an independent run; writes DIR/runs.csv, DIR/summary.csv and SVG plots. Reruns
-// skip runs whose results exist. Exit code 1 if any run failed (each failure is recorded).
+// file as an independent run; writes DIR/runs.csv, DIR/summary.csv and plots (SVG, PDF or PNG).
+// Reruns skip runs whose results exist. Exit code 1 if any run failed (each failure is recorded).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -22,6 +22,7 @@ void add_sweep_command(CLI::App& app) {
     std::size_t jobs = std::max(1u, std::thread::hardware_concurrency());
     std::string shard = "0/1";
     std::string group;
+    std::string format = "svg";
     bool keep_series = false;
     std::vector<std::string> plugins;
   };
@@ -33,6 +34,9 @@ void add_sweep_command(CLI::App& app) {
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   cmd->add_option("--group", opts->group, "Plot one line per value of this swept parameter");
+  cmd->add_option("--format", opts->format, "Plots as svg, pdf or png")
+      ->check(CLI::IsMember({"svg", "pdf", "png"}))
+      ->capture_default_str();
   cmd->add_flag("--keep-series", opts->keep_series,
                 "Keep each run's metrics (metrics.csv's columns) as DIR/runs/<index>.metrics.csv");
   add_plugin_option(cmd, opts->plugins);
@@ -57,7 +61,8 @@ void add_sweep_command(CLI::App& app) {
         run_sweep(spec, dir, SweepOptions{opts->jobs, true, k, n, opts->keep_series});
     write_runs_csv(dir / "runs.csv", spec, results);
     write_summary_csv(dir / "summary.csv", spec, results);
-    const auto plots = write_sweep_plots(dir, spec, results, opts->group);
+    const auto plots =
+        write_sweep_plots(dir, spec, results, opts->group, *parse_figure_format(opts->format));
     std::size_t failed = 0, converged = 0;
     for (const SweepResult& r : results) {
       failed += r.error ? 1 : 0;

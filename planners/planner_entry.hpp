@@ -53,6 +53,8 @@ struct PlannerEntry : ComponentInfo {
   // scenario is loaded rather than when its run starts; throw ParamError.
   std::function<void(const Environment&, const Params&)> check;
   PlannerContract contract;
+  // Its steps depend on the range sensor's range (a sensor-range study varies them).
+  bool reads_range = false;
 };
 
 // A scenario's "planner": the type, and its parameters validated against its schema.

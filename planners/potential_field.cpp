@@ -80,6 +80,7 @@ PlanStep PotentialField::step(const SensorReading& r, double max_step) {
 PlannerEntry potential_field_entry() {
   PlannerEntry e;
   e.name = "potential_field";
+  e.reads_range = true;
   e.description = "Khatib's attractive and repulsive potentials over what the range sensor sees";
   e.params = {
       ParamSpec::number("influence", "m", "distance d0 within which walls repel")

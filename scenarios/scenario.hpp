@@ -13,6 +13,7 @@
 #include "core/geometry/density.hpp"
 #include "core/geometry/environment.hpp"
 #include "robot/coverage_config.hpp"
+#include "scenarios/recording_config.hpp"
 
 namespace covsim {
 
@@ -27,6 +28,7 @@ struct Scenario {
   std::vector<Vec2> robot_positions;
   std::optional<std::uint64_t> seed;
   CoverageConfig coverage;  // the controller's settings, defaults where the file is silent
+  RecordingConfig recording;
 };
 
 // Throws ScenarioError naming the file, the JSON path and what was expected: malformed

@@ -78,6 +78,7 @@ nlohmann::ordered_json describe_scenario(const Scenario& s) {
                         {"virtual_tolerance", c.virtual_tolerance_in(env.diameter())},
                         {"max_time", seconds(c.max_time)}};
   out["metrics"] = {{"period", seconds(c.sample_period)}};
+  out["recording"] = {{"trajectory_period", s.recording.trajectory_period}};
   // Only a scenario with a network has one: without, robots know each other's state at once.
   if (s.json.contains("network") && !s.json.at("network").is_null()) {
     const NetworkConfig& n = c.network;
@@ -117,6 +118,7 @@ std::string scenario_key_unit(std::string_view path) {
       {"convergence.virtual_tolerance", "m"},
       {"convergence.max_time", "s"},
       {"metrics.period", "s"},
+      {"recording.trajectory_period", "s"},
       {"network.range", "m"},
       {"network.broadcast_period", "s"},
       {"network.staleness", "s"},

@@ -286,13 +286,17 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   s.json = json;
   const JsonValue root(s.json, source);
   root.only_keys({"environment", "density", "robots", "seed", "planner", "controller", "sensor",
-                  "loops", "convergence", "metrics", "network"});
+                  "loops", "convergence", "metrics", "network", "recording"});
   if (auto seed = root.find("seed")) s.seed = seed->unsigned_integer();
   s.base_dir = base_dir;
   s.environment = read_environment(root.at("environment"));
   s.density = read_density(root.at("density"), base_dir, *s.environment, s.seed);
   if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment, s.seed);
   read_coverage(root, s.coverage);
+  if (auto r = root.find("recording")) {
+    r->only_keys({"trajectory_period"});
+    if (auto p = r->find("trajectory_period")) s.recording.trajectory_period = p->non_negative();
+  }
   // Checks that need the environment (grids too fine for it) fail here, not at a run's start.
   const auto check = [&](const auto& entry, const Params& params, const char* key) {
     if (!entry.check) return;

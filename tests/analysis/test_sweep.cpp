@@ -238,12 +238,15 @@ TEST_CASE("plots group their lines by a chosen parameter", "[sweep]") {
   const auto grouped = write_sweep_plots(dir / "out", spec, results, "network.broadcast_period");
   // Plots against p only (the grouping parameter is never an x axis), one line per period.
   CHECK_FALSE(grouped.empty());
-  for (const fs::path& f : grouped) {
+  for (const fs::path& f : grouped)
     CHECK_THAT(f.filename().string(), Catch::EndsWith("_vs_network.loss.p.svg"));
-    std::ifstream in(f);
-    const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    CHECK_THAT(svg, Catch::Contains("network.broadcast_period = 0.1<"));
-    CHECK_THAT(svg, Catch::Contains("network.broadcast_period = 0.5<"));
+  const auto charts = sweep_charts(spec, results, "network.broadcast_period");
+  REQUIRE(charts.size() == grouped.size());
+  for (const SweepChart& c : charts) {
+    REQUIRE(c.chart.series.size() == 2);
+    CHECK(c.chart.series[0].label == "network.broadcast_period = 0.1");
+    CHECK(c.chart.series[1].label == "network.broadcast_period = 0.5");
+    CHECK(c.chart.series[0].samples.size() == 4);  // 2 values of p x 2 seeds, as dots
   }
   // Without a group, plots exist against both parameters.
   const auto all = write_sweep_plots(dir / "out", spec, results);

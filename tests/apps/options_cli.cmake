@@ -122,3 +122,13 @@ run_ok(same replay ${WORK}/t.trace)
 if(same_err MATCHES "different build")
   message(FATAL_ERROR "a trace of this build warned: ${same_err}")
 endif()
+
+# `list planners --reads-range`: the planners a sensor-range study varies (the registry's
+# flag), and only for planners.
+run_ok(ranged list planners --names --reads-range)
+run_ok(every list planners --names)
+if(NOT ranged_out STREQUAL "tangent_bug\npotential_field\n" OR NOT every_out MATCHES
+   "straight_line")
+  message(FATAL_ERROR "list planners --reads-range: '${ranged_out}' of '${every_out}'")
+endif()
+bad("--reads-range on laws" "applies to planners only" list laws --reads-range)

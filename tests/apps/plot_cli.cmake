@@ -51,7 +51,7 @@ endfunction()
 
 load(${WORK}/run/replay.html dom err)
 # u_shape converges after 744 motion steps: 745 frames; the slider moves to frame 372.
-if(NOT dom MATCHES "<pre id=\"status\">selftest ok: frame 372 of 745, t=37.2, robots 5, cells 5<")
+if(NOT dom MATCHES "<pre id=\"status\">selftest ok: frame 372 of 745, t=37.2, robots 5, cells 5, cost cursor t=37.2, keys ok, png ok<")
   string(REGEX MATCH "<pre id=\"status\">[^<]*<" status "${dom}")
   message(FATAL_ERROR "the replay did not draw the frame the slider moved to: ${status}")
 endif()

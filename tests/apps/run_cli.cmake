@@ -35,7 +35,7 @@ if(NOT converged STREQUAL "ON" OR NOT nrobots EQUAL 5 OR NOT fplen EQUAL 16)
   message(FATAL_ERROR "unexpected final.json: ${final}")
 endif()
 file(READ ${WORK}/u/scene.svg svg)
-if(NOT svg MATCHES "^<svg" OR NOT svg MATCHES "</svg>")
+if(NOT svg MATCHES "^<\\?xml[^>]*>[ \n]*<svg" OR NOT svg MATCHES "</svg>[ \n]*$")
   message(FATAL_ERROR "scene.svg is not an SVG document")
 endif()
 

@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# The figures as files other tools read: `covsim run --format` and `covsim plot --format`
+# write well-formed SVG, valid PDF and PNG of the requested width; a Gaussian density is an
+# image (with its colour bar), not a grid of shapes; office's scene stays under 1 MB;
+# thinned recordings still draw; bad options are errors naming them.
+# Usage: figures_cli.sh COVSIM SOURCE WORK
+set -euo pipefail
+covsim=$1 source=$2 work=$3
+py=/usr/bin/python3
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+check_svg() { "$py" -c 'import sys, xml.etree.ElementTree as E
+root = E.parse(sys.argv[1]).getroot()
+assert root.tag == "{http://www.w3.org/2000/svg}svg", root.tag' "$1" || fail "$1 is not well-formed SVG"; }
+check_pdf() { "$py" - "$1" <<'PY' || fail "$1 is not a valid PDF"
+import re, sys
+data = open(sys.argv[1], "rb").read()
+assert data.startswith(b"%PDF-1."), "header"
+assert data.rstrip().endswith(b"%%EOF"), "trailer"
+# The cross-reference table points at each object where it is.
+start = int(re.findall(rb"startxref\s+(\d+)", data)[-1])
+assert data[start:start + 4] == b"xref", "startxref"
+entries = re.findall(rb"(\d{10}) 00000 n", data[start:])
+for k, off in enumerate(entries, start=1):
+    assert re.match(rb"\d+ 0 obj", data[int(off):int(off) + 20]), f"object at {int(off)}"
+assert b"/Type /Page" in data or b"/Type/Page" in data, "no page"
+PY
+}
+png_size() { "$py" - "$1" <<'PY'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+assert data[:8] == b"\x89PNG\r\n\x1a\n", "signature"
+pos, size = 8, None
+while pos < len(data):  # every chunk's CRC holds
+    n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    body = data[pos + 8:pos + 8 + n]
+    assert zlib.crc32(kind + body) == struct.unpack(">I", data[pos + 8 + n:pos + 12 + n])[0], kind
+    if kind == b"IHDR": size = struct.unpack(">II", body[:8])
+    pos += 12 + n
+    if kind == b"IEND": break
+print(f"{size[0]}x{size[1]}")
+PY
+}
+
+# u_shape: run writes PDF figures; plot redraws them in each format.
+"$covsim" run "$source/scenarios/u_shape.json" --out u --format pdf > /dev/null
+[ -f u/scene.pdf ] && [ -f u/cost.pdf ] && [ ! -e u/scene.svg ] || fail "run --format pdf wrote $(ls u)"
+check_pdf u/scene.pdf
+check_pdf u/cost.pdf
+"$covsim" plot u > /dev/null
+check_svg u/scene.svg
+check_svg u/cost.svg
+grep -q "glyph" u/scene.svg || fail "scene.svg has no text"
+"$covsim" plot u --format png --png-width 900 > /dev/null
+case "$(png_size u/scene.png)" in 900x*) ;; *) fail "scene.png is $(png_size u/scene.png), not 900 wide" ;; esac
+case "$(png_size u/cost.png)" in 900x*) ;; *) fail "cost.png is $(png_size u/cost.png), not 900 wide" ;; esac
+"$covsim" plot u --format png > /dev/null
+case "$(png_size u/scene.png)" in 1752x*) ;; *) fail "default scene.png is $(png_size u/scene.png)" ;; esac
+
+# The options: a window, a robot subset, a title, a log scale; bad values exit 2 naming them.
+"$covsim" plot u --time-window 10,30 --robots 1,3 --title "two robots" --log-cost > /dev/null
+check_svg u/scene.svg
+bad() {  # bad REGEX ARGS...
+  local want=$1; shift
+  set +e; err=$("$covsim" "$@" 2>&1 >/dev/null); rc=$?; set -e
+  [ $rc -eq 2 ] && [[ $err =~ $want ]] || fail "$* gave exit $rc: $err"
+}
+bad "--time-window" plot u --time-window 30,10
+bad "--time-window" plot u --time-window abc
+bad "--robots: robot 9 does not exist" plot u --robots 1,9
+bad "--robots" plot u --robots 1,-2
+bad "--format" plot u --format jpg
+bad "--format" run "$source/scenarios/u_shape.json" --out v --format gif
+[ ! -e v ] || fail "a bad --format left a folder behind"
+
+# A Gaussian density is one image with a colour bar, not thousands of shapes.
+"$covsim" run "$source/scenarios/fig2d.json" --out g > /dev/null
+check_svg g/scene.svg
+[ "$(grep -c "<image" g/scene.svg)" -ge 1 ] || fail "fig2d's density is not an image"
+[ "$(grep -c "<rect" g/scene.svg)" -lt 200 ] || fail "fig2d's scene draws a grid of rectangles"
+
+# office: the scene stays under 1 MB as SVG.
+"$covsim" run "$source/scenarios/office.json" --out office > /dev/null
+size=$(stat -c %s office/scene.svg)
+[ "$size" -lt 1000000 ] || fail "office's scene.svg is $size bytes"
+check_svg office/scene.svg
+
+# A thinned recording: fewer rows, the same run, and it still draws and replays.
+"$covsim" run "$source/scenarios/u_shape.json" --out thin --set recording.trajectory_period=1 > /dev/null
+full=$(wc -l < u/trajectory.csv) thin=$(wc -l < thin/trajectory.csv)
+[ "$thin" -lt $((full / 5)) ] || fail "trajectory_period 1 s kept $thin of $full rows"
+fp() { "$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["fingerprint"])' "$1/final.json"; }
+[ "$(fp thin)" = "$(fp u)" ] || fail "thinning the recording changed the run"
+# Every robot's last row is where final.json has it.
+"$py" - thin <<'PY' || fail "a thinned recording lost the robots' final positions"
+import csv, json, sys
+final = json.load(open(sys.argv[1] + "/final.json"))
+last = {}
+for row in csv.DictReader(open(sys.argv[1] + "/trajectory.csv")):
+    last[int(row["robot"])] = (float(row["x"]), float(row["y"]))
+for i, r in enumerate(final["robots"]):
+    assert max(abs(a - b) for a, b in zip(last[i], r["position"])) < 1e-9, (i, last[i], r)
+PY
+"$covsim" plot thin > /dev/null
+check_svg thin/scene.svg
+bad "trajectory_period" run "$source/scenarios/u_shape.json" --out w --set recording.trajectory_period=-1
+echo "figures ok"
