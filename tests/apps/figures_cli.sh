@@ -105,4 +105,17 @@ PY
 "$covsim" plot thin > /dev/null
 check_svg thin/scene.svg
 bad "trajectory_period" run "$source/scenarios/u_shape.json" --out w --set recording.trajectory_period=-1
+# A sweep's plots redraw from its folder in another format, nothing run again.
+cat > sweep.json <<JSON
+{"scenario": "$source/scenarios/u_shape.json", "grid": {"sensor.range": [0.1, 0.5]}, "seeds": [1]}
+JSON
+"$covsim" sweep sweep.json --out s --jobs 2 > /dev/null 2>&1
+svgs=$(ls s/*_vs_sensor.range.svg | wc -l)
+[ "$svgs" -ge 5 ] || fail "the sweep drew $svgs plots"
+for f in s/*.svg; do check_svg "$f"; done
+cp s/summary.csv summary-before.csv
+"$covsim" merge s --out s --format png > /dev/null
+[ "$(ls s/*_vs_sensor.range.png | wc -l)" -eq "$svgs" ] || fail "merge --format png drew $(ls s/*.png | wc -l) of $svgs"
+png_size "$(ls s/*_vs_sensor.range.png | head -1)" > /dev/null
+cmp -s s/summary.csv summary-before.csv || fail "merging a sweep into itself changed its summary"
 echo "figures ok"
