@@ -118,4 +118,17 @@ cp s/summary.csv summary-before.csv
 [ "$(ls s/*_vs_sensor.range.png | wc -l)" -eq "$svgs" ] || fail "merge --format png drew $(ls s/*.png | wc -l) of $svgs"
 png_size "$(ls s/*_vs_sensor.range.png | head -1)" > /dev/null
 cmp -s s/summary.csv summary-before.csv || fail "merging a sweep into itself changed its summary"
+# covsim chart bars: a CSV table's means as grouped bars; quoted fields, nan skipped.
+printf 'planner,law,x\nA,"l,1",1\nA,"l,1",3\nB,"l,1",nan\nB,m,4\nA,m,\n' > t.csv
+means=$("$covsim" chart bars t.csv --group planner --series law --value x --out bars.svg)
+[ "$means" = "$(printf 'planner,law,mean,count\n"A","l,1",2,2\n"B","m",4,1')" ] ||
+  fail "chart bars means: $means"
+check_svg bars.svg
+"$covsim" chart bars t.csv --group planner --series law --value x --out bars.pdf > /dev/null
+check_pdf bars.pdf
+bad "--value: .*no column \"y\"" chart bars t.csv --group planner --series law --value y --out b.svg
+bad "--out: .*expected a .svg, .pdf or .png" chart bars t.csv --group planner --series law --value x --out b.jpg
+printf 'planner,law,x\nA,m,abc\n' > bad.csv
+bad "bad.csv:2: column \"x\": expected a number" chart bars bad.csv --group planner --series law --value x --out b.svg
+[ ! -e b.svg ] || fail "a failed chart left a file"
 echo "figures ok"
