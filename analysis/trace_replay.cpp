@@ -1,11 +1,11 @@
 #include "analysis/trace_replay.hpp"
 
-#include "analysis/provenance.hpp"
-
 #include <nlohmann/json.hpp>
 
 #include "analysis/coverage_run.hpp"
+#include "analysis/provenance.hpp"
 #include "core/hash.hpp"
+#include "scenarios/json_reader.hpp"
 #include "scenarios/scenario_error.hpp"
 
 namespace covsim {
@@ -62,11 +62,7 @@ ReplayReport replay_trace(const std::filesystem::path& trace) {
                         ": the trace carries no scenario (write one with covsim run --trace)");
   }
   nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(embedded);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ScenarioError(trace.string() + ": the embedded scenario is not valid JSON: " + e.what());
-  }
+  json = parse_json(embedded, trace.string() + " (embedded scenario)");
   const Scenario scenario = parse_scenario(json, trace.string() + " (embedded scenario)",
                                            header_value(reader.header(), "scenario_dir"));
   TraceComparer comparer(reader);

@@ -7,6 +7,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "apps/scenario_options.hpp"
 #include "core/atomic_file.hpp"
 #include "scenarios/random_environment.hpp"
 #include "scenarios/scenario.hpp"
@@ -16,9 +17,11 @@ namespace covsim::app {
 void add_random_env_command(CLI::App& app) {
   auto spec = std::make_shared<RandomEnvironmentSpec>();
   auto out = std::make_shared<std::string>();
+  auto seed = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand(
       "random-env", "Write a random polygonal environment with holes and robots as a scenario");
-  cmd->add_option("--seed", spec->seed, "Seed: the same seed gives the same scenario")->required();
+  cmd->add_option("--seed", *seed, "Seed (0 to 2^64 - 1): the same seed gives the same scenario")
+      ->required();
   cmd->add_option("--out", *out, "Scenario file to write (default: stdout)");
   cmd->add_option("--size", spec->size, "Side of the square the environment lies in [m]")
       ->capture_default_str();
@@ -27,7 +30,8 @@ void add_random_env_command(CLI::App& app) {
   cmd->add_option("--holes", spec->holes, "Holes (at most; fewer if they do not fit)")
       ->capture_default_str();
   cmd->add_option("--robots", spec->robots, "Robots")->capture_default_str();
-  cmd->callback([spec, out] {
+  cmd->callback([spec, out, seed] {
+    spec->seed = parse_seed(*seed);
     nlohmann::ordered_json scenario;
     try {
       scenario = random_environment(*spec);

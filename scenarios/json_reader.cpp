@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -27,30 +28,111 @@ std::string kind(const nlohmann::json& j) {
 }
 }  // namespace
 
+namespace {
+// Where the parser is: a frame per open object (its keys so far, its current key) or array
+// (its current index), so that an error can name the JSON path.
+struct Frame {
+  bool object;
+  std::vector<std::string> keys;
+  std::ptrdiff_t index = -1;
+};
+
+// The path of the value being read, or with `container` of the innermost open object or
+// array itself.
+std::string path_of(const std::vector<Frame>& frames, bool container = false) {
+  std::string path = "$";
+  for (std::size_t k = 0; k + (container ? 1 : 0) < frames.size(); ++k) {
+    const Frame& f = frames[k];
+    if (f.object && !f.keys.empty()) path += "." + f.keys.back();
+    if (!f.object && f.index >= 0) path += fmt::format("[{}]", f.index);
+  }
+  if (path.size() > 80) path = path.substr(0, 60) + "...";  // a deep nest's path
+  return path;
+}
+
+// Line and column of a byte offset (1-based).
+std::pair<std::size_t, std::size_t> place(const std::string& text, std::size_t byte) {
+  std::size_t line = 1, col = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return {line, col};
+}
+}  // namespace
+
+nlohmann::json parse_json(const std::string& text, const std::string& source) {
+  std::vector<Frame> frames;
+  const auto element = [&] {  // a value starts: the next element of an enclosing array
+    if (!frames.empty() && !frames.back().object) ++frames.back().index;
+  };
+  using Event = nlohmann::json::parse_event_t;
+  const nlohmann::json::parser_callback_t check = [&](int depth, Event event,
+                                                      nlohmann::json& parsed) {
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        element();
+        if (static_cast<std::size_t>(depth) >= kMaxJsonDepth)
+          throw ScenarioError(source, path_of(frames),
+                              fmt::format("JSON nested deeper than {} levels", kMaxJsonDepth));
+        frames.push_back({event == Event::object_start, {}, -1});
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        if (!frames.empty()) frames.pop_back();
+        break;
+      case Event::key: {
+        Frame& f = frames.back();
+        const std::string key = parsed.get<std::string>();
+        if (std::find(f.keys.begin(), f.keys.end(), key) != f.keys.end()) {
+          throw ScenarioError(source, path_of(frames, true),
+                              fmt::format("duplicate key \"{}\" (each key once)", key));
+        }
+        f.keys.push_back(key);
+        break;
+      }
+      case Event::value:
+        element();
+        break;
+    }
+    return true;
+  };
+  try {
+    return nlohmann::json::parse(text, check);
+  } catch (const nlohmann::json::parse_error& e) {
+    const auto [line, col] = place(text, e.byte > 0 ? e.byte - 1 : 0);
+    std::string what = e.what();
+    if (const auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
+    throw ScenarioError(fmt::format("{}:{}:{}: malformed JSON: {}", source, line, col, what));
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number beyond a double's range (1e999): name it and where it first appears.
+    std::string what = e.what(), token;
+    if (const auto a = what.find('\''), b = what.rfind('\''); a != std::string::npos && b > a)
+      token = what.substr(a + 1, b - a - 1);
+    const std::size_t at = token.empty() ? std::string::npos : text.find(token);
+    if (at == std::string::npos)
+      throw ScenarioError(fmt::format("{}: a number is out of a double's range", source));
+    const auto [line, col] = place(text, at);
+    throw ScenarioError(
+        fmt::format("{}:{}:{}: the number {} is out of a double's range (about ±1.8e308)", source,
+                    line, col, token));
+  }
+}
+
 nlohmann::json read_json_file(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw ScenarioError(file.string() + ": is a directory, not a JSON file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw ScenarioError(file.string() + ": cannot open file");
   std::stringstream ss;
   ss << in.rdbuf();
-  const std::string text = ss.str();
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    // Turn the byte offset into a line and column.
-    std::size_t line = 1, col = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
-    }
-    std::string what = e.what();
-    if (const auto p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
-    throw ScenarioError(
-        fmt::format("{}:{}:{}: malformed JSON: {}", file.string(), line, col, what));
-  }
+  return parse_json(ss.str(), file.string());
 }
 
 void JsonValue::fail(std::string_view what) const {

@@ -17,7 +17,14 @@
 
 namespace covsim {
 
-// Parses a file; malformed JSON is reported with its line and column.
+// JSON nested deeper than this is refused (it would exhaust the stack).
+inline constexpr std::size_t kMaxJsonDepth = 256;
+
+// Parses JSON text strictly: malformed JSON (with its line and column), a duplicate key in
+// an object, nesting deeper than kMaxJsonDepth, and a number beyond a double's range are
+// ScenarioErrors naming `source` (and the JSON path or the place).
+nlohmann::json parse_json(const std::string& text, const std::string& source);
+// parse_json of a file's text; a missing file or a directory is named as such.
 nlohmann::json read_json_file(const std::filesystem::path& file);
 
 class JsonValue {

@@ -47,9 +47,13 @@ ScenarioOverride parse_override(std::string_view text, std::string_view option) 
   if (const std::string e = dotted_path_error(o.path); !e.empty())
     throw std::invalid_argument(fmt::format("{}: {}", o.as_typed, e));
   const std::string value(text.substr(eq + 1));
-  try {
-    o.value = nlohmann::json::parse(value);
-  } catch (const nlohmann::json::parse_error&) {
+  if (nlohmann::json::accept(value)) {
+    try {  // strictly: no duplicate keys, bounded depth
+      o.value = parse_json(value, o.as_typed);
+    } catch (const ScenarioError& e) {
+      throw std::invalid_argument(e.what());
+    }
+  } else {
     const bool word = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
     });

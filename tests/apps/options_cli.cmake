@@ -132,3 +132,7 @@ if(NOT ranged_out STREQUAL "tangent_bug\npotential_field\n" OR NOT every_out MAT
   message(FATAL_ERROR "list planners --reads-range: '${ranged_out}' of '${every_out}'")
 endif()
 bad("--reads-range on laws" "applies to planners only" list laws --reads-range)
+
+# random-env's seed is read strictly, as run's is.
+bad("random-env --seed -1" "--seed: expected a whole number" random-env --seed -1)
+bad("random-env --seed 1.5" "--seed: expected a whole number" random-env --seed 1.5)

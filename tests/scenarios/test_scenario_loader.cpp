@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include "scenarios/json_reader.hpp"
 #include "scenarios/random_environment.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/scenario_error.hpp"
@@ -313,4 +314,30 @@ TEST_CASE("drawn robots and density means are checked", "[scenario][deployment]"
   const Scenario s2 =
       load_scenario(write("m.json", "{" + kSquare + ", " + mixture + R"(, "seed": 2})"));
   CHECK((*s1.density)({0.5, 0.5}) != (*s2.density)({0.5, 0.5}));
+}
+
+TEST_CASE("JSON is read strictly: duplicate keys, deep nesting, huge numbers, directories",
+          "[scenario]") {
+  // A duplicate key is an error at its object's path, wherever it is.
+  expect_error("{" + kSquare + R"(, "seed": 1, "seed": 2})", "$: duplicate key \"seed\"");
+  expect_error("{" + kSquare + R"(, "robots": {"count": 2, "count": 3}})",
+               "$.robots: duplicate key \"count\"");
+  expect_error(R"({"environment": {"outer": [[0, 0], [4, 0], [4, 4], {"x": 1, "x": 2}]}})",
+               "$.environment.outer[3]: duplicate key \"x\"");
+  // Keys repeated in different objects are fine.
+  CHECK_NOTHROW(load_scenario(write("ok.json", "{" + kSquare + R"(, "density": {"type": "uniform"},
+      "robots": {"positions":
+      [[0.5, 0.5]]}, "sensor": {"range": 1}, "planner": {"type": "tangent_bug"}})")));
+  // Nesting is bounded (100 000 levels used to overflow the stack).
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  expect_error(deep, "JSON nested deeper than 256 levels");
+  CHECK_NOTHROW(parse_json(std::string(200, '[') + std::string(200, ']'), "nest"));
+  // A number beyond a double's range is named with its place.
+  expect_error("{\n" + kSquare + R"(, "seed": 1,
+    "sensor": {"range": 1e999}})",
+               ":3:25: the number 1e999 is out of a double's range");
+  // A directory is not malformed JSON.
+  const fs::path dir = write("x.json", "{}").parent_path() / "a-folder";
+  fs::create_directories(dir);
+  CHECK_THROWS_WITH(load_scenario(dir), Catch::Contains("is a directory, not a JSON file"));
 }
