@@ -21,6 +21,13 @@ namespace covsim {
 
 namespace {
 
+// The limits docs/scenario-format.md states: what a double resolves and a run can afford.
+constexpr double kMinPeriod = 1e-4;        // s
+constexpr double kMaxCoordinate = 1e6;     // m
+constexpr double kMinExtent = 1e-3;        // m: Ω's box diagonal
+constexpr double kMinRelativeEdge = 1e-6;  // an edge against Ω's box diagonal
+constexpr double kMaxMotionSteps = 1e8;    // max_time / loop2_period
+
 std::shared_ptr<const Environment> read_environment(const JsonValue& v) {
   v.only_keys({"outer", "holes"});
   std::vector<Vec2> outer = v.at("outer").points();
@@ -28,6 +35,37 @@ std::shared_ptr<const Environment> read_environment(const JsonValue& v) {
   if (auto h = v.find("holes")) {
     for (std::size_t i = 0; i < h->size(); ++i)
       holes.push_back((*h)[i].points());
+  }
+  // Sizes a double resolves: coordinates within ±1e6 m, Ω at least 1 mm across, no edge
+  // shorter than a millionth of Ω (a finer feature would be lost in the tolerances).
+  const auto ring_value = [&](std::size_t r) {
+    return r == 0 ? v.at("outer") : v.at("holes")[r - 1];
+  };
+  Box box;
+  for (std::size_t r = 0; r <= holes.size(); ++r) {
+    const std::vector<Vec2>& ring = r == 0 ? outer : holes[r - 1];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      if (std::abs(ring[i].x) > kMaxCoordinate || std::abs(ring[i].y) > kMaxCoordinate)
+        ring_value(r)[i].fail(
+            fmt::format("coordinates beyond ±{:g} m are not supported (found ({}, {}))",
+                        kMaxCoordinate, ring[i].x, ring[i].y));
+      if (r == 0) box.add(ring[i]);
+    }
+  }
+  const double extent = norm(box.size());
+  if (!(extent >= kMinExtent))
+    v.at("outer").fail(fmt::format("the environment is {:g} m across; at least {:g} m is supported",
+                                   extent, kMinExtent));
+  for (std::size_t r = 0; r <= holes.size(); ++r) {
+    const std::vector<Vec2>& ring = r == 0 ? outer : holes[r - 1];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const double edge = distance(ring[i], ring[(i + 1) % ring.size()]);
+      if (edge > 0 && edge < kMinRelativeEdge * extent)
+        ring_value(r)[i].fail(fmt::format(
+            "the edge from this vertex is {:g} m long, below {:g} of the environment's size "
+            "({:g} m): too small to resolve",
+            edge, kMinRelativeEdge, extent));
+    }
   }
   try {
     return std::make_shared<const Environment>(std::move(outer), std::move(holes));
@@ -59,8 +97,8 @@ std::shared_ptr<const Density> read_density(const JsonValue& v,
 
 SimTime read_period(const JsonValue& v) {
   const double s = v.positive();
-  if (s < 1e-9 || s > 1e6)
-    v.fail(fmt::format("expected a period between 1e-9 and 1e6 s, found {}", s));
+  if (s < kMinPeriod || s > 1e6)
+    v.fail(fmt::format("expected a period between {:g} and 1e6 s, found {}", kMinPeriod, s));
   return SimTime::from_seconds(s);
 }
 
@@ -148,6 +186,16 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     if (auto t = v->find("position_tolerance")) c.position_tolerance = t->positive();
     if (auto t = v->find("virtual_tolerance")) c.virtual_tolerance = t->positive();
     if (auto t = v->find("max_time")) c.max_time = read_period(*t);
+  }
+  // A bound on the run's length: motion steps of every robot until max_time.
+  if (c.max_time.seconds() / c.loop2_period.seconds() > kMaxMotionSteps) {
+    const auto at = root.find("convergence") && root.at("convergence").find("max_time")
+                        ? *root.at("convergence").find("max_time")
+                        : root;
+    at.fail(fmt::format(
+        "max_time {:g} s at a loop-2 period of {:g} s is more than {:g} motion steps per robot; "
+        "lower max_time or raise loops.loop2_period",
+        c.max_time.seconds(), c.loop2_period.seconds(), kMaxMotionSteps));
   }
   if (auto m = root.find("metrics")) {
     m->only_keys({"period"});

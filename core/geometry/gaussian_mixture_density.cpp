@@ -14,35 +14,56 @@ namespace covsim {
 namespace {
 constexpr int kMixturePoints = 8;  // exact to degree 14 on each triangle
 
-// Calls f on triangles covering the triangle (a, b, c), halving its longest edge until no
-// edge is longer than max_width.
+// Beyond this many standard deviations a bump is below 1e-31 of its height: left to the
+// quadrature of the floor.
+constexpr double kReach = 12.0;
+
+double distance_to_triangle(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
+  const double d1 = cross(b - a, p - a), d2 = cross(c - b, p - b), d3 = cross(a - c, p - c);
+  if ((d1 >= 0 && d2 >= 0 && d3 >= 0) || (d1 <= 0 && d2 <= 0 && d3 <= 0)) return 0.0;
+  const auto seg = [&](Vec2 u, Vec2 v) {
+    const Vec2 e = v - u;
+    const double t = std::clamp(dot(p - u, e) / std::max(norm2(e), 1e-300), 0.0, 1.0);
+    return distance(p, u + t * e);
+  };
+  return std::min({seg(a, b), seg(b, c), seg(c, a)});
+}
+
+// Calls f on triangles covering the triangle (a, b, c), halving its longest edge while it is
+// longer than the σ of a bump within reach of it: the cost follows the bumps, not the ratio
+// of Ω to σ.
 template <class F>
-void subdivide(Vec2 a, Vec2 b, Vec2 c, double max_width, const F& f, int depth = 0) {
+void subdivide(Vec2 a, Vec2 b, Vec2 c, const std::vector<GaussianComponent>& bumps, const F& f,
+               int depth = 0) {
   const double ab = norm2(b - a), bc = norm2(c - b), ca = norm2(a - c);
   const double longest = std::max({ab, bc, ca});
+  double max_width = INFINITY;
+  for (const GaussianComponent& g : bumps)
+    if (g.sigma < max_width && distance_to_triangle(g.mean, a, b, c) < kReach * g.sigma)
+      max_width = g.sigma;
   if (longest <= max_width * max_width || depth > 40) {
     f(a, b, c);
     return;
   }
   if (longest == ab) {
     const Vec2 m = 0.5 * (a + b);
-    subdivide(a, m, c, max_width, f, depth + 1);
-    subdivide(m, b, c, max_width, f, depth + 1);
+    subdivide(a, m, c, bumps, f, depth + 1);
+    subdivide(m, b, c, bumps, f, depth + 1);
   } else if (longest == bc) {
     const Vec2 m = 0.5 * (b + c);
-    subdivide(a, b, m, max_width, f, depth + 1);
-    subdivide(a, m, c, max_width, f, depth + 1);
+    subdivide(a, b, m, bumps, f, depth + 1);
+    subdivide(a, m, c, bumps, f, depth + 1);
   } else {
     const Vec2 m = 0.5 * (c + a);
-    subdivide(a, b, m, max_width, f, depth + 1);
-    subdivide(m, b, c, max_width, f, depth + 1);
+    subdivide(a, b, m, bumps, f, depth + 1);
+    subdivide(m, b, c, bumps, f, depth + 1);
   }
 }
 }  // namespace
 
 GaussianMixtureDensity::GaussianMixtureDensity(std::vector<GaussianComponent> components,
                                                double floor)
-    : components_(std::move(components)), floor_(floor), max_width_(INFINITY) {
+    : components_(std::move(components)), floor_(floor) {
   if (!std::isfinite(floor) || floor < 0.0)
     throw std::invalid_argument("floor must be finite and non-negative");
   for (std::size_t i = 0; i < components_.size(); ++i) {
@@ -55,7 +76,6 @@ GaussianMixtureDensity::GaussianMixtureDensity(std::vector<GaussianComponent> co
     if (c.weight < 0.0)
       throw std::invalid_argument("component " + std::to_string(i) +
                                   ": weight must be non-negative");
-    max_width_ = std::min(max_width_, c.sigma);
   }
 }
 
@@ -71,7 +91,7 @@ Moments GaussianMixtureDensity::integrate(const ConvexPolygon& piece, Vec2 r) co
   if (piece.size() < 3) return out;
   const auto f = [&](Vec2 x) { return (*this)(x); };
   for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
-    subdivide(piece[0], piece[k], piece[k + 1], max_width_, [&](Vec2 a, Vec2 b, Vec2 c) {
+    subdivide(piece[0], piece[k], piece[k + 1], components_, [&](Vec2 a, Vec2 b, Vec2 c) {
       out += triangle_moments(a, b, c, r, f, kMixturePoints);
     });
   }

@@ -26,7 +26,6 @@ class GaussianMixtureDensity final : public Density {
  private:
   std::vector<GaussianComponent> components_;
   double floor_;
-  double max_width_;  // triangles are split until no edge is longer
 };
 
 DensityEntry gaussian_mixture_density_entry();

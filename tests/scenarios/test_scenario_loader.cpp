@@ -341,3 +341,29 @@ TEST_CASE("JSON is read strictly: duplicate keys, deep nesting, huge numbers, di
   fs::create_directories(dir);
   CHECK_THROWS_WITH(load_scenario(dir), Catch::Contains("is a directory, not a JSON file"));
 }
+
+TEST_CASE("sizes and periods beyond the stated limits are refused, naming the place",
+          "[scenario]") {
+  const std::string rest = R"(, "density": {"type": "uniform"}, "seed": 1})";
+  // A hole's side of 1e-9 m in a unit square, an Ω 1e-200 m across, coordinates of 1e77.
+  expect_error(R"({"environment": {"outer": [[0, 0], [1, 0], [1, 1], [0, 1]], "holes":
+      [[[0.5, 0.5], [0.500000001, 0.5], [0.500000001, 0.500000001], [0.5, 0.500000001]]]})" +
+                   rest,
+               "$.environment.holes[0][0]: the edge from this vertex is 1e-09 m long");
+  expect_error(
+      R"({"environment": {"outer": [[0, 0], [1e-200, 0], [1e-200, 1e-200], [0, 1e-200]]})" + rest,
+      "$.environment.outer: the environment is 1.41421e-200 m across");
+  expect_error(R"({"environment": {"outer": [[0, 0], [1e77, 0], [1e77, 1e77], [0, 1e77]]})" + rest,
+               "$.environment.outer[1]: coordinates beyond ±1e+06 m are not supported");
+  // Periods below 1e-4 s, and runs of more than 1e8 motion steps.
+  expect_error(
+      "{" + kSquare + R"(, "density": {"type": "uniform"}, "loops": {"loop2_period": 1e-9}})",
+      "$.loops.loop2_period: expected a period between 0.0001 and 1e6 s");
+  expect_error(
+      "{" + kSquare + R"(, "density": {"type": "uniform"}, "loops": {"loop2_period": 0.001},
+      "convergence": {"max_time": 200000}})",
+      "$.convergence.max_time: max_time 200000 s at a loop-2 period of 0.001 s");
+  // At the limits themselves: accepted.
+  CHECK_NOTHROW(load_scenario(write("big.json", R"({"environment": {"outer": [[-1e6, -1e6],
+      [1e6, -1e6], [1e6, 1e6], [-1e6, 1e6]]}, "density": {"type": "uniform"}})")));
+}

@@ -7,9 +7,9 @@
 #include <unistd.h>
 
 #include "core/geometry/gaussian_mixture_density.hpp"
+#include "core/geometry/quadrature.hpp"
 #include "core/geometry/raster_density.hpp"
 #include "core/geometry/uniform_density.hpp"
-#include "core/geometry/quadrature.hpp"
 #include "core/geometry/voronoi_partition.hpp"
 #include "tests/core/geometry/shapes.hpp"
 
@@ -111,6 +111,24 @@ TEST_CASE("Gaussian mixture mass and centroid to 1e-6 at sigma = diameter / 20",
   CHECK(total == Approx(mass).epsilon(1e-6));
   CHECK(first.x / total == Approx(sx / mass).epsilon(1e-6));
   CHECK(first.y / total == Approx(sy / mass).epsilon(1e-6));
+}
+
+TEST_CASE("a Gaussian much narrower than Ω integrates where it is, to the closed form",
+          "[density]") {
+  // σ = 0.1 m in a 1000 m room (it once took minutes: triangles of side σ everywhere).
+  const double sigma = 0.1, floor = 1e-3;
+  const Vec2 mu{500.3, 499.8};
+  const Environment env(square(0, 0, 1000, 1000), {});
+  const GaussianMixtureDensity d({{mu, sigma, 3.0}}, floor);
+  const CellIntegrator cells(env, d);
+  const double mass = 3.0 * 2.0 * M_PI * sigma * sigma + floor * 1e6;
+  CHECK(cells.total_mass() == Approx(mass).epsilon(1e-9));
+  // A cell holding the bump and one without it: the bump's mass where it lies.
+  VoronoiPartition part(cells, {{500, 500}, {100, 100}});
+  const double near = part.moments(0).mass, far = part.moments(1).mass;
+  // The bisector x + y = 600 leaves the far cell a triangle of 180 000 m².
+  CHECK(far == Approx(floor * 180000.0).epsilon(1e-9));
+  CHECK(near == Approx(3.0 * 2.0 * M_PI * sigma * sigma + floor * 820000.0).epsilon(1e-9));
 }
 
 TEST_CASE("constant and bilinear rasters integrate exactly", "[density]") {
