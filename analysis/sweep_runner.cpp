@@ -20,6 +20,7 @@
 #include "analysis/statistics.hpp"
 #include "core/atomic_file.hpp"
 #include "core/fingerprint.hpp"
+#include "core/interrupt.hpp"
 #include "scenarios/scenario_description.hpp"
 
 namespace covsim {
@@ -79,6 +80,8 @@ SweepResult execute(const SweepSpec& spec, const SweepRun& run, const fs::path& 
         series.stream() << csv_row(metrics_fields(), sample) << '\n';
       series.commit();
     }
+  } catch (const Interrupted&) {
+    throw;  // the run is abandoned, not failed: a resumed sweep runs it again
   } catch (const std::exception& e) {
     r.error = e.what();
   }
@@ -207,13 +210,28 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
     else
       fmt::print(stderr, "{}\n", line);
   };
+  // An interrupt stops every worker after its current event; the runs done are kept.
+  std::exception_ptr interrupted;
   auto worker = [&] {
     for (std::size_t t = next++; t < todo.size(); t = next++) {
       const std::size_t k = todo[t];
-      SweepResult r = execute(spec, mine[k], dir, options.keep_series);
-      AtomicFile f(dir / "runs" / fmt::format("{}.json", r.index));
-      f.stream() << to_json(r).dump() << '\n';
-      f.commit();
+      SweepResult r;
+      try {
+        r = execute(spec, mine[k], dir, options.keep_series);
+      } catch (const Interrupted&) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!interrupted) interrupted = std::current_exception();
+        next = todo.size();
+        return;
+      }
+      try {
+        AtomicFile f(dir / "runs" / fmt::format("{}.json", r.index));
+        f.stream() << to_json(r).dump() << '\n';
+        f.commit();
+      } catch (const std::exception& e) {  // a full disk, say: this run's error
+        r.error = fmt::format("cannot write its result: {}", e.what());
+        r.values.clear();
+      }
       std::lock_guard<std::mutex> lock(mutex);
       results[k] = std::move(r);
       ++finished;
@@ -228,6 +246,7 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
   for (auto& t : threads)
     t.join();
   if (options.progress && tty) fmt::print(stderr, "\n");
+  if (interrupted) std::rethrow_exception(interrupted);
   return results;
 }
 

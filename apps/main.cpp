@@ -5,6 +5,7 @@
 #include "analysis/provenance.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "core/interrupt.hpp"
 #include "scenarios/scenario_error.hpp"
 
 int main(int argc, char** argv) {
@@ -23,11 +24,15 @@ int main(int argc, char** argv) {
   covsim::app::add_replay_command(app);
   covsim::app::add_run_command(app);
   covsim::app::add_sweep_command(app);
+  covsim::install_interrupt_handlers();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  } catch (const covsim::Interrupted& e) {
+    std::cerr << "covsim: " << e.what() << "; partial outputs removed\n";
+    return 128 + e.signal;
   } catch (const covsim::ScenarioError& e) {
     std::cerr << "covsim: " << e.what() << '\n';
     return 2;

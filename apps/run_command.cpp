@@ -80,6 +80,10 @@ void add_run_command(CLI::App& app) {
             fmt::format("{}: cannot create directory: {}", dir.string(), ec.message()));
     } else if (!fs::is_directory(dir)) {
       throw InputError(dir.string() + ": exists and is not a directory");
+    } else {
+      // Partial files a killed run (SIGKILL) left behind.
+      for (const auto& entry : fs::directory_iterator(dir, ec))
+        if (entry.path().extension() == ".partial") fs::remove(entry.path(), ec);
     }
     std::unique_ptr<TraceWriter> trace;
     if (!opts->trace.empty()) {

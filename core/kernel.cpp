@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/hash.hpp"
+#include "core/interrupt.hpp"
 #include "core/trace.hpp"
 
 namespace covsim {
@@ -156,6 +157,7 @@ RunResult Kernel::run_loop(const Limits& limits) {
     }
     if (!dispatch_next(limits.until)) break;  // queue empty, or next event after the limit
     ++result.events;
+    if (const int s = pending_interrupt()) throw Interrupted(s);
     if (stop_requested_) {
       stop_requested_ = false;
       result.reason = StopReason::stopped;
