@@ -1,9 +1,12 @@
 #include "analysis/trace_replay.hpp"
 
+#include <fmt/format.h>
+
 #include <nlohmann/json.hpp>
 
 #include "analysis/coverage_run.hpp"
 #include "analysis/provenance.hpp"
+#include "core/fingerprint.hpp"
 #include "core/hash.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario_error.hpp"
@@ -63,8 +66,19 @@ ReplayReport replay_trace(const std::filesystem::path& trace) {
   }
   nlohmann::json json;
   json = parse_json(embedded, trace.string() + " (embedded scenario)");
+  // The header's seed and hash must be those of the embedded scenario: an edited header is a
+  // changed scenario, not a divergence.
+  if (fnv1a64(embedded) != reader.header().scenario_hash)
+    throw TraceFormatError(
+        fmt::format("{}: scenario changed: the embedded scenario's hash is {}, the header says {}",
+                    trace.string(), Fingerprint::to_hex(fnv1a64(embedded)),
+                    Fingerprint::to_hex(reader.header().scenario_hash)));
   const Scenario scenario = parse_scenario(json, trace.string() + " (embedded scenario)",
                                            header_value(reader.header(), "scenario_dir"));
+  if (scenario.seed.value_or(0) != reader.header().seed)
+    throw TraceFormatError(
+        fmt::format("{}: scenario changed: the header's seed is {}, the embedded scenario's {}",
+                    trace.string(), reader.header().seed, scenario.seed.value_or(0)));
   TraceComparer comparer(reader);
   ReplayReport report;
   report.build_differences = build_differences(provenance_of(reader.header()));

@@ -6,6 +6,7 @@
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "core/interrupt.hpp"
+#include "core/trace.hpp"
 #include "scenarios/scenario_error.hpp"
 
 int main(int argc, char** argv) {
@@ -33,6 +34,9 @@ int main(int argc, char** argv) {
   } catch (const covsim::Interrupted& e) {
     std::cerr << "covsim: " << e.what() << "; partial outputs removed\n";
     return 128 + e.signal;
+  } catch (const covsim::TraceFormatError& e) {
+    std::cerr << "covsim: " << e.what() << '\n';
+    return 2;
   } catch (const covsim::ScenarioError& e) {
     std::cerr << "covsim: " << e.what() << '\n';
     return 2;

@@ -37,6 +37,8 @@ void TraceWriter::record(std::uint64_t index, SimTime t, const std::string& kind
                          std::uint32_t entity, std::uint64_t fingerprint) {
   fmt::format_to(std::back_inserter(buffer_), "{} {} {} {} {:016x}\n", index, t.ns(), kind, entity,
                  fingerprint);
+  ++records_;
+  last_fingerprint_ = fingerprint;
   if (buffer_.size() >= kFlushBytes) flush_buffer();
 }
 
@@ -46,12 +48,13 @@ void TraceWriter::flush_buffer() {
 }
 
 void TraceWriter::commit() {
+  fmt::format_to(std::back_inserter(buffer_), "end {} {:016x}\n", records_, last_fingerprint_);
   flush_buffer();
   file_.commit();
 }
 
 TraceReader::TraceReader(std::filesystem::path path) : path_(std::move(path)), in_(path_) {
-  if (!in_) throw std::runtime_error(path_.string() + ": cannot open trace");
+  if (!in_) throw TraceFormatError(path_.string() + ": cannot open trace");
   std::string line;
   auto next_line = [&]() -> bool {
     if (!std::getline(in_, line)) return false;
@@ -90,13 +93,37 @@ TraceReader::TraceReader(std::filesystem::path path) : path_(std::move(path)), i
 }
 
 void TraceReader::fail(const std::string& what) const {
-  throw std::runtime_error(path_.string() + ":" + std::to_string(line_) + ": " + what);
+  throw TraceFormatError(path_.string() + ":" + std::to_string(line_) + ": " + what);
 }
 
 std::optional<TraceRecord> TraceReader::next() {
+  if (ended_) return std::nullopt;
   std::string line;
-  if (!std::getline(in_, line)) return std::nullopt;
+  if (!std::getline(in_, line))
+    fail(fmt::format("the trace is cut short: it ends after {} events without its end record",
+                     records_));
   ++line_;
+  if (line.rfind("end ", 0) == 0) {
+    std::uint64_t count = 0;
+    const char* p = line.data() + 4;
+    const char* end = line.data() + line.size();
+    const auto [q, ec] = std::from_chars(p, end, count);
+    const auto fp =
+        q < end && *q == ' ' ? Fingerprint::parse_hex(std::string_view(q + 1, end)) : std::nullopt;
+    if (ec != std::errc() || !fp) fail("malformed end record");
+    if (count != records_ || (records_ > 0 && *fp != last_fingerprint_))
+      fail(fmt::format(
+          "the end record counts {} events ending at {}, the trace holds {} ending at "
+          "{}: the trace was edited",
+          count, Fingerprint::to_hex(*fp), records_, Fingerprint::to_hex(last_fingerprint_)));
+    std::string rest;
+    if (std::getline(in_, rest)) {
+      ++line_;
+      fail("text after the end record");
+    }
+    ended_ = true;
+    return std::nullopt;
+  }
   TraceRecord r;
   const char* p = line.data();
   const char* end = line.data() + line.size();
@@ -117,6 +144,8 @@ std::optional<TraceRecord> TraceReader::next() {
   auto fp = Fingerprint::parse_hex(std::string_view(p, static_cast<std::size_t>(end - p)));
   if (!fp) fail("event record's fingerprint is not 16 hex digits");
   r.fingerprint = *fp;
+  ++records_;
+  last_fingerprint_ = r.fingerprint;
   return r;
 }
 

@@ -25,6 +25,11 @@
 
 namespace covsim {
 
+// A trace that is not one (malformed, truncated, or edited): bad input, not a divergence.
+struct TraceFormatError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct TraceHeader {
   int version = 1;
   std::uint64_t seed = 0;
@@ -54,27 +59,32 @@ class TraceWriter final : public TraceSink {
   TraceWriter(std::filesystem::path path, const TraceHeader& header);
   void record(std::uint64_t index, SimTime t, const std::string& kind, std::uint32_t entity,
               std::uint64_t fingerprint) override;
-  // The trace file appears only when committed (see AtomicFile).
+  // Writes the end record (the number of events and the last fingerprint, so that a cut
+  // trace is told from a diverging run); the file appears only now (see AtomicFile).
   void commit();
 
  private:
   void flush_buffer();
   AtomicFile file_;
   std::string buffer_;
+  std::uint64_t records_ = 0, last_fingerprint_ = 0;
 };
 
 class TraceReader {
  public:
-  // Throws std::runtime_error naming the file and line for anything malformed.
+  // Throws TraceFormatError naming the file and line for anything malformed.
   explicit TraceReader(std::filesystem::path path);
   const TraceHeader& header() const { return header_; }
+  // The next event record; nullopt after the last one. A trace without its end record, or
+  // whose end record disagrees with its events, throws TraceFormatError.
   std::optional<TraceRecord> next();
 
  private:
   [[noreturn]] void fail(const std::string& what) const;
   std::filesystem::path path_;
   std::ifstream in_;
-  std::uint64_t line_ = 0;
+  std::uint64_t line_ = 0, records_ = 0, last_fingerprint_ = 0;
+  bool ended_ = false;
   TraceHeader header_;
 };
 

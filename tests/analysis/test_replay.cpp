@@ -78,18 +78,27 @@ TEST_CASE("a replay reports the first event where an altered trace differs", "[r
   r = replay_trace(other_robot);
   REQUIRE(r.divergence);
   CHECK(r.divergence->index == 77);
-  // A trace cut short: the replay goes on where the trace ended.
+  // A trace cut short is bad input, not a divergence.
   std::ifstream in(trace);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::size_t at = text.find("\nevents\n") + 8;
   for (int k = 0; k < 100; ++k)
     at = text.find('\n', at) + 1;
   std::ofstream(trace.string() + ".cut") << text.substr(0, at);
-  r = replay_trace(trace.string() + ".cut");
-  REQUIRE(r.divergence);
-  CHECK(r.divergence->index == 100);
-  CHECK_FALSE(r.divergence->a);
-  CHECK(r.divergence->b);
+  CHECK_THROWS_WITH(replay_trace(trace.string() + ".cut"),
+                    Catch::Contains("cut short: it ends after 100 events"));
+  // An edited header: the scenario changed, not the run.
+  std::string header = text;
+  const std::size_t seed_at = header.find("\nseed ") + 6;
+  header.insert(seed_at, "9");
+  std::ofstream(trace.string() + ".seed") << header;
+  CHECK_THROWS_WITH(replay_trace(trace.string() + ".seed"), Catch::Contains("scenario changed"));
+  std::string hash = text;
+  const std::size_t hash_at = hash.find("\nscenario_hash ") + 15;
+  hash[hash_at] = hash[hash_at] == '0' ? '1' : '0';
+  std::ofstream(trace.string() + ".hash") << hash;
+  CHECK_THROWS_WITH(replay_trace(trace.string() + ".hash"),
+                    Catch::Contains("scenario changed: the embedded scenario's hash"));
 }
 
 TEST_CASE("a trace without a scenario cannot be replayed", "[replay]") {

@@ -114,7 +114,8 @@ TEST_CASE("comparing traces finds the first diverging event", "[trace]") {
   CHECK(d->a->time != d->b->time);
   CHECK(d->a->kind == d->b->kind);
 
-  // A different seed diverges early; a truncated trace diverges where it ends.
+  // A different seed diverges early; a truncated trace is reported as cut short, not as a
+  // divergence, and an end record that disagrees with the events as edited.
   traced_run(dir / "d.trace", 10);
   TraceReader a2(dir / "a.trace"), d2(dir / "d.trace");
   CHECK(first_divergence(a2, d2));
@@ -122,11 +123,17 @@ TEST_CASE("comparing traces finds the first diverging event", "[trace]") {
   cut.resize(cut.find('\n', events_at) + 1);  // header and one record
   std::ofstream(dir / "e.trace") << cut;
   TraceReader a3(dir / "a.trace"), e3(dir / "e.trace");
-  const auto d3 = first_divergence(a3, e3);
-  REQUIRE(d3);
-  CHECK(d3->index == 1);
-  CHECK(d3->a);
-  CHECK_FALSE(d3->b);
+  CHECK_THROWS_AS(first_divergence(a3, e3), TraceFormatError);
+  TraceReader e4(dir / "e.trace");
+  CHECK(e4.next());
+  CHECK_THROWS_WITH(e4.next(),
+                    Catch::Contains("cut short: it ends after 1 events without its end record"));
+  std::string edited = slurp(dir / "a.trace");
+  const std::size_t end_at = edited.rfind("\nend ") + 5;
+  edited.insert(end_at, "1");  // the count gains a leading digit
+  std::ofstream(dir / "f.trace") << edited;
+  TraceReader a5(dir / "a.trace"), f5(dir / "f.trace");
+  CHECK_THROWS_WITH(first_divergence(a5, f5), Catch::Contains("the trace was edited"));
 }
 
 TEST_CASE("malformed traces are reported with file and line", "[trace]") {
