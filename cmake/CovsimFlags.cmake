@@ -22,3 +22,6 @@ if(COVSIM_SANITIZE)
                                                 -fno-sanitize-recover=all -fno-omit-frame-pointer)
   target_link_options(covsim_flags INTERFACE -fsanitize=address,undefined)
 endif()
+if(COVSIM_FUZZ)  # coverage feedback from all of covsim's code for libFuzzer
+  target_compile_options(covsim_flags INTERFACE -fsanitize=fuzzer-no-link)
+endif()
