@@ -27,14 +27,14 @@ namespace covsim::app {
 namespace fs = std::filesystem;
 
 namespace {
-// Removes a directory this command created, if a failure left it empty.
+// Removes the folder this command writes a new run into (DIR.partial) if it fails.
 struct CreatedDirectory {
   fs::path dir;
   bool created = false;
   bool keep = false;
   ~CreatedDirectory() {
     std::error_code ec;
-    if (created && !keep && fs::is_empty(dir, ec)) fs::remove(dir, ec);
+    if (created && !keep) fs::remove_all(dir, ec);
   }
 };
 }  // namespace
@@ -66,15 +66,22 @@ void add_run_command(CLI::App& app) {
     if (!scenario.seed)
       throw ScenarioError(scenario.source, "$",
                           "missing required key \"seed\" (or give one with --seed)");
-    const fs::path dir =
+    fs::path dir =
         !opts->out.empty()
-            ? fs::path(opts->out)
+            ? fs::path(opts->out).lexically_normal()
             : fs::path("out") / fmt::format("{}-{}", fs::path(opts->scenario.file).stem().string(),
                                             *scenario.seed);
-    CreatedDirectory guard{dir};
+    if (!dir.has_filename()) dir = dir.parent_path();  // "out/run/"
+    // A new run folder appears whole or not at all: written as DIR.partial, renamed at the
+    // end. Into an existing folder each file is replaced whole.
+    fs::path work = dir;
+    CreatedDirectory guard;
     std::error_code ec;
     if (!fs::exists(dir)) {
-      guard.created = fs::create_directories(dir, ec);
+      work = fs::path(dir.string() + ".partial");
+      fs::remove_all(work, ec);  // what a killed run left
+      guard.dir = work;
+      guard.created = fs::create_directories(work, ec);
       if (ec)
         throw InputError(
             fmt::format("{}: cannot create directory: {}", dir.string(), ec.message()));
@@ -91,14 +98,14 @@ void add_run_command(CLI::App& app) {
           trace_header_for(scenario, fs::path(opts->scenario.file).parent_path());
       trace = std::make_unique<TraceWriter>(opts->trace, header);
     }
-    RunRecorder recorder(dir, scenario.robot_positions, scenario.recording.trajectory_period);
+    RunRecorder recorder(work, scenario.robot_positions, scenario.recording.trajectory_period);
     const CoverageOutcome outcome = run_coverage(scenario, &recorder, trace.get());
 
     const FigureFormat format = *parse_figure_format(opts->format);
     const std::string ext(extension(format));
-    AtomicFile final_file(dir / "final.json"), scene(dir / ("scene." + ext)),
-        cost(dir / ("cost." + ext));
-    AtomicFile scenario_copy(dir / "scenario.json");
+    AtomicFile final_file(work / "final.json"), scene(work / ("scene." + ext)),
+        cost(work / ("cost." + ext));
+    AtomicFile scenario_copy(work / "scenario.json");
     scenario_copy.stream()
         << portable_scenario(scenario, fs::path(opts->scenario.file).parent_path()).dump(2) << "\n";
     final_file.stream() << final_json(outcome);
@@ -109,6 +116,12 @@ void add_run_command(CLI::App& app) {
     final_file.commit();
     scene.commit();
     cost.commit();
+    if (work != dir) {
+      fs::rename(work, dir, ec);
+      if (ec)
+        throw std::runtime_error(fmt::format("{}: cannot rename {} into place: {}", dir.string(),
+                                             work.string(), ec.message()));
+    }
     if (trace) trace->commit();
     guard.keep = true;
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SIGINT and SIGTERM stop a run or a sweep at the next event, leave no partial file and no
-# folder a run created, and exit 130 / 143; the interrupted sweep resumes to the same
+# folder a run created (a new run folder is written as DIR.partial and appears whole at the
+# end), and exit 130 / 143; the interrupted sweep resumes to the same
 # results; a folder a killed run left partial files in is cleaned by the next run.
 # Usage: interrupt_cli.sh COVSIM SOURCE WORK
 set -euo pipefail
@@ -21,10 +22,19 @@ interrupt() {  # SIG WAIT-FOR ARGS...
   echo $rc
 }
 
-rc=$(interrupt TERM run1 run "$office" --out run1)
+rc=$(interrupt TERM run1.partial/trajectory.csv.partial run "$office" --out run1)
 [ "$rc" -eq 143 ] || fail "SIGTERM: exit $rc: $(cat err.txt)"
 grep -q "interrupted by SIGTERM" err.txt || fail "no message: $(cat err.txt)"
-[ ! -e run1 ] || fail "an interrupted run left its folder: $(ls run1)"
+[ ! -e run1 ] && [ ! -e run1.partial ] || fail "an interrupted run left its folder: $(ls -d run1*)"
+# Uninterrupted, the folder appears whole, and only at the end.
+"$covsim" run "$office" --out run3 --set convergence.max_time=200 > /dev/null &
+pid=$!
+k=0
+until [ -e run3.partial ] || [ $k -ge 200 ]; do sleep 0.05; k=$((k + 1)); done
+[ ! -e run3 ] || fail "run3 appeared before the run ended"
+wait $pid
+[ -f run3/final.json ] && [ -f run3/trajectory.csv ] && [ ! -e run3.partial ] ||
+  fail "run3 did not appear whole: $(ls -d run3*)"
 
 # Into an existing folder: nothing half-written stays, what was there stays.
 mkdir -p run2 && echo keep > run2/notes.txt && echo stale > run2/final.json.partial
