@@ -66,7 +66,7 @@ void draw_axes(Canvas& c, const Axes& a, std::string_view x_label, std::string_v
   const Stroke grid_line{light, 0.6}, tick_line{ink, 0.8};
   const double xs = tick_step(a.data.hi.x - a.data.lo.x, 8);
   for (double x = std::ceil(a.data.lo.x / xs - 1e-9) * xs; x <= a.data.hi.x + 1e-9 * xs; x += xs) {
-    const double px = a.to_px({x, a.data.lo.y == 0 && a.log_y ? 1 : a.data.lo.y}).x;
+    const double px = a.to_px({x, a.data.lo.y}).x;
     if (grid) c.line({px, a.lo.y}, {px, a.hi.y}, grid_line);
     c.line({px, a.hi.y}, {px, a.hi.y + tick}, tick_line);
     c.text({px, a.hi.y + tick + font + 1}, tick_label(x, xs), font, ink, Align::centre);

@@ -151,32 +151,29 @@ void Canvas::polyline(const std::vector<Vec2>& points, const Stroke& s) {
   cairo_stroke(cr_);
 }
 
-namespace {
-void paint(cairo_t* cr, std::optional<Colour> fill, const std::optional<Stroke>& s, Canvas& canvas,
-           void (Canvas::*apply)(const Stroke&)) {
+void Canvas::paint(std::optional<Colour> fill, const std::optional<Stroke>& s) {
   if (fill) {
-    cairo_set_source_rgba(cr, fill->r, fill->g, fill->b, fill->a);
-    s ? cairo_fill_preserve(cr) : cairo_fill(cr);
+    set(*fill);
+    s ? cairo_fill_preserve(cr_) : cairo_fill(cr_);
   }
   if (s) {
-    (canvas.*apply)(*s);
-    cairo_stroke(cr);
+    apply(*s);
+    cairo_stroke(cr_);
   }
-  cairo_new_path(cr);
+  cairo_new_path(cr_);
 }
-}  // namespace
 
 void Canvas::rectangle(Vec2 lo, Vec2 hi, std::optional<Colour> fill, std::optional<Stroke> s) {
   cairo_new_path(cr_);
   cairo_rectangle(cr_, lo.x, lo.y, hi.x - lo.x, hi.y - lo.y);
-  paint(cr_, fill, s, *this, &Canvas::apply);
+  paint(fill, s);
 }
 
 void Canvas::circle(Vec2 c, double radius, std::optional<Colour> fill, std::optional<Stroke> s) {
   cairo_new_path(cr_);
   cairo_arc(cr_, c.x, c.y, radius, 0.0, 2.0 * M_PI);
   cairo_close_path(cr_);
-  paint(cr_, fill, s, *this, &Canvas::apply);
+  paint(fill, s);
 }
 
 void Canvas::square(Vec2 c, double half, std::optional<Colour> fill, std::optional<Stroke> s) {

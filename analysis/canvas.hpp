@@ -86,6 +86,8 @@ class Canvas {
   Canvas() = default;
   void path(const std::vector<std::vector<Vec2>>& rings, bool close);
   void apply(const Stroke& s);
+  // Fills and/or strokes the current path, then clears it.
+  void paint(std::optional<Colour> fill, const std::optional<Stroke>& s);
   void set(Colour c);
   FigureFormat format_ = FigureFormat::png;
   bool raster_ = false;

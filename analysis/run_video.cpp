@@ -116,10 +116,26 @@ class Encoder {
   struct sigaction old_ {};
 };
 
-void draw_frame(Canvas& c, const MapView& view, const RunFiles& run,
-                const std::vector<RobotTrack>& tracks, double t, const std::string& name) {
-  const Scenario& s = run.scenario;
-  const Environment& env = *s.environment;
+// Each robot's trail in pixels, grown as the frames' time advances (frames come in order).
+struct Trails {
+  std::vector<std::vector<Vec2>> px;
+  std::vector<std::size_t> next;  // each track's first record not yet in its trail
+  void advance(const MapView& view, const std::vector<RobotTrack>& tracks, double t) {
+    px.resize(tracks.size());
+    next.resize(tracks.size(), 0);
+    for (std::size_t i = 0; i < tracks.size(); ++i) {
+      const std::size_t now = tracks[i].at(t);
+      for (; next[i] <= now && next[i] < tracks[i].t.size(); ++next[i]) {
+        const Vec2 p = view.to_px(tracks[i].position[next[i]]);
+        if (px[i].empty() || distance(px[i].back(), p) > 0.5) px[i].push_back(p);
+      }
+    }
+  }
+};
+
+void draw_frame(Canvas& c, const MapView& view, const Environment& env,
+                const CellIntegrator& integrator, const std::vector<RobotTrack>& tracks,
+                Trails& trails, double t, const std::string& name) {
   c.rectangle({0, 0}, {c.width(), c.height()}, Colour::hex(0xffffff));
   view.draw_background(c);
   std::vector<Vec2> virt;
@@ -128,7 +144,6 @@ void draw_frame(Canvas& c, const MapView& view, const RunFiles& run,
   const double scale = std::clamp(c.width() / 960.0, 0.6, 2.0);
   c.push_clip(view.to_px(env.rings()));
   if (!virt.empty()) {
-    const CellIntegrator integrator(env, *s.density);
     const VoronoiPartition cells(integrator, virt, VoronoiPartition::Coincident::split);
     for (std::size_t i = 0; i < cells.size(); ++i) {
       const auto cell = cells.cell(i);
@@ -136,16 +151,9 @@ void draw_frame(Canvas& c, const MapView& view, const RunFiles& run,
         c.stroke(view.to_px({{cell.begin(), cell.end()}}), Stroke{Colour::hex(0x1f5fbf), scale});
     }
   }
-  for (std::size_t i = 0; i < tracks.size(); ++i) {
-    const RobotTrack& k = tracks[i];
-    const std::size_t now = k.at(t);
-    std::vector<Vec2> trail;
-    for (std::size_t j = 0; j <= now; ++j) {
-      const Vec2 p = view.to_px(k.position[j]);
-      if (trail.empty() || distance(trail.back(), p) > 0.5) trail.push_back(p);
-    }
-    c.polyline(trail, Stroke{robot_colour(i), 1.5 * scale});
-  }
+  trails.advance(view, tracks, t);
+  for (std::size_t i = 0; i < tracks.size(); ++i)
+    c.polyline(trails.px[i], Stroke{robot_colour(i), 1.5 * scale});
   c.pop_clip();
   for (std::size_t i = 0; i < tracks.size(); ++i) {
     const RobotTrack& k = tracks[i];
@@ -188,9 +196,12 @@ void write_run_video(const RunFiles& run, const fs::path& file, const VideoOptio
   try {
     Encoder encoder(partial, ext.substr(1), w, h, options.fps);
     Canvas canvas = Canvas::raster(w, h);
+    const CellIntegrator integrator(*run.scenario.environment, *run.scenario.density);
+    Trails trails;
     const bool tty = options.progress && isatty(2);
     for (std::size_t f = 0; f < frames; ++f) {
-      draw_frame(canvas, view, run, tracks, std::min(end, f * dt), name);
+      draw_frame(canvas, view, *run.scenario.environment, integrator, tracks, trails,
+                 std::min(end, static_cast<double>(f) * dt), name);
       const unsigned char* px = canvas.pixels();
       for (int y = 0; y < h; ++y)
         encoder.write(px + static_cast<std::ptrdiff_t>(y) * canvas.stride(),
