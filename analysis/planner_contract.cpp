@@ -219,7 +219,10 @@ void add(ContractSummary& s, const ContractResult& r) {
   s.recoveries += r.recoveries;
   if (r.status == PlanStatus::reached && r.shortest > 1e-9) {
     const double ratio = r.length / r.shortest;
-    s.worst_ratio = std::max(s.worst_ratio, ratio);
+    if (ratio > s.worst_ratio) {
+      s.worst_ratio = ratio;
+      s.worst_ratio_case = r.index;
+    }
     s.mean_ratio += ratio;
     ++s.ratio_cases;
   }

@@ -79,7 +79,8 @@ ContractResult run_contract_case(const ContractSetup& setup, std::uint64_t seed,
 struct ContractSummary {
   std::size_t cases = 0, reachable = 0, reached = 0, projected = 0, stalled = 0, failures = 0;
   std::size_t recoveries = 0;
-  double worst_ratio = 0.0;  // path length / L*, over the reached goals
+  double worst_ratio = 0.0;            // path length / L*, over the reached goals
+  std::uint64_t worst_ratio_case = 0;  // the case index of worst_ratio, to rerun it
   double mean_ratio = 0.0;
   std::size_t ratio_cases = 0;         // the reached goals with L* > 0 that the ratios cover
   double worst_bound_use = 0.0;        // path length / bound, over the cases with a bound

@@ -29,6 +29,10 @@ class Planner {
   virtual std::string_view name() const = 0;
   // A new goal; what happens to the motion under way is the planner's documented rule.
   virtual void set_goal(Vec2 goal) = 0;
+  // The goal moved while the robot is on its way to it (a periodic loop 1 moves targets
+  // every period): by default a new goal; a planner whose state is worth keeping across a
+  // small move (TangentBug's boundary-following episode) carries it over.
+  virtual void move_goal(Vec2 goal) { set_goal(goal); }
   virtual PlanStep step(const SensorReading& reading, double max_step) = 0;
 };
 

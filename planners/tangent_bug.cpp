@@ -70,6 +70,19 @@ void TangentBug::set_goal(Vec2 goal) {
   leave_length_ = 0.0;
 }
 
+void TangentBug::move_goal(Vec2 goal) {
+  if (mode_ == Mode::done || mode_ == Mode::to_projection) return set_goal(goal);
+  const double shift = distance(goal, goal_);
+  goal_ = goal;
+  h_prev_ += shift;
+  bound_ += shift;
+  d_followed_ += shift;
+  idle_steps_ = 0;
+  // A leave heads for the visible point nearest the old goal: motion to the new one instead,
+  // still held to the bound the leave set.
+  if (mode_ == Mode::leave) resume_motion_to_goal();
+}
+
 PlanStep TangentBug::finish(Vec2 at, PlanStatus s) {
   mode_ = Mode::done;
   status_ = s;
@@ -94,6 +107,7 @@ PlanStep TangentBug::step(const SensorReading& r, double max_step) {
     const double moved = distance(*last_position_, x);
     path_ += moved;
     idle_steps_ = moved > p_.tolerance ? 0 : idle_steps_ + 1;
+    if (moved > p_.tolerance) motion_ = (x - *last_position_) / moved;
   }
   last_position_ = x;
   if (path_ > p_.path_budget || idle_steps_ > kMaxIdleSteps) return finish(x, PlanStatus::stalled);
@@ -171,10 +185,12 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, std::ui
   const Vec2 x = r.position;
   if (memory_.complete(ring) && memory_.encloses(ring, goal_))
     return walk_to(r, ring, Mode::to_projection);
-  // The direction that continues toward the point last headed for; between two equally
-  // good ones, the one whose edge ends nearer the goal.
+  // The direction that continues the motion (Kamon et al.): toward the point last headed
+  // for while it lies ahead; standing on it, the direction of the last step that moved;
+  // only a robot that has never moved takes the goal's. Between two equally good ones, the
+  // one whose edge ends nearer the goal.
   const bool ahead = heading_ && distance(*heading_, x) > p_.tolerance;
-  const Vec2 ref = unit(ahead ? *heading_ - x : goal_ - x);
+  const Vec2 ref = ahead ? unit(*heading_ - x) : motion_ ? *motion_ : unit(goal_ - x);
   int dir = 0;
   double best_score = -kInf, best_end = kInf;
   for (int d : {1, -1}) {

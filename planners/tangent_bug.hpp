@@ -29,6 +29,15 @@
 //   motion to goal from it (counted in `recoveries`), so a reachable goal is never declared
 //   unreachable.
 //
+// A goal that moves while the robot is on its way (move_goal) keeps the mode and the episode:
+// a robot following a wall follows on, one heading for a node heads on. Every distance to
+// the goal changes by at most the move, so h, d_followed and the bound widen by it: what was
+// good enough stays so. Without this, a target moved every period restarts motion to goal
+// each time, and a robot just past a corner heads back to it (the straight-line heuristic
+// of the corner behind beats the one ahead) and shuttles there for as long as the target
+// moves. A goal moved while the robot walks to a projection, or after it ended, starts
+// afresh.
+//
 // What was learned by walking round an obstacle stays across goals: a later goal inside it
 // is projected as soon as the robot touches it. A new goal restarts motion to goal from
 // where the robot stands. Every goal ends: a path longer than `path_budget`, or 20 steps in
@@ -64,6 +73,7 @@ class TangentBug final : public Planner {
   explicit TangentBug(TangentBugParams params) : p_(params), memory_(params.tolerance) {}
   std::string_view name() const override { return "tangent_bug"; }
   void set_goal(Vec2 goal) override;
+  void move_goal(Vec2 goal) override;
   PlanStep step(const SensorReading& reading, double max_step) override;
 
   enum class Mode { motion_to_goal, approach, follow, leave, to_projection, to_closest, done };
@@ -117,6 +127,8 @@ class TangentBug final : public Planner {
   // Bookkeeping for the goal.
   double path_ = 0.0;
   std::optional<Vec2> last_position_;
+  // The direction of the last step that moved; kept across goals, it is the robot's own.
+  std::optional<Vec2> motion_;
   static constexpr int kMaxIdleSteps = 20;
   int idle_steps_ = 0;
   std::vector<std::uint32_t> episodes_;

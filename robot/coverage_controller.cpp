@@ -96,8 +96,14 @@ void CoverageController::loop1(std::uint32_t i) {
   // goal it reached, found unreachable or gave up on is never handed to it again (it would
   // only do the same again), and periodic updates cannot keep restarting a robot on its way
   // round an obstacle.
+  // A robot on its way keeps its planner's state for the moved goal (Planner::move_goal).
   if (distance(r.virtual_target, r.assigned) > tol_.position) {
-    set_goal(r, r.virtual_target);
+    if (is_settled(r.status)) {
+      set_goal(r, r.virtual_target);
+    } else {
+      r.planner->move_goal(r.virtual_target);
+      r.goal = r.virtual_target;
+    }
     r.assigned = r.virtual_target;
   }
 }

@@ -89,6 +89,10 @@ class PyPlanner final : public Planner {
     py::gil_scoped_acquire gil;
     obj_->attr("set_goal")(to_array(goal));
   }
+  void move_goal(Vec2 goal) override {
+    py::gil_scoped_acquire gil;
+    obj_->attr(py::hasattr(*obj_, "move_goal") ? "move_goal" : "set_goal")(to_array(goal));
+  }
   PlanStep step(const SensorReading& reading, double max_step) override {
     py::gil_scoped_acquire gil;
     const py::tuple t = obj_->attr("step")(PyReading{reading}, max_step);
@@ -275,7 +279,8 @@ void bind_components(py::module_& m) {
       "Registers a planner written in Python under `name`, selectable as a scenario's "
       "planner.type. factory(environment, params) makes one per robot: an object with "
       "set_goal(goal) and step(reading, max_step) -> (next, status), status one of 'moving', "
-      "'reached', 'projected', 'stalled'. params: {name: default}, validated in scenarios "
+      "'reached', 'projected', 'stalled', and optionally move_goal(goal) (the goal moved "
+      "while on the way; set_goal without it). params: {name: default}, validated in scenarios "
       "like a built-in planner's. complete: whether it promises to reach every reachable "
       "goal (docs/python.md).");
   m.def(

@@ -103,3 +103,32 @@ def test_a_python_planner_that_jumps_stops_the_run(scenarios):
     with pytest.raises(RuntimeError, match="planner py_jumper proposed a step of .* the step "
                                            "length is"):
         covsim.Simulation(s).run()
+
+
+def test_a_python_planner_may_keep_its_state_when_its_goal_moves():
+    # Periodic loop 1 moves targets under robots on their way: move_goal when the planner
+    # has one, set_goal when it has not.
+    calls = {"set": 0, "move": 0}
+
+    class Counting(Straight):
+        def set_goal(self, goal):
+            calls["set"] += 1
+            super().set_goal(goal)
+
+    class Keeping(Counting):
+        def move_goal(self, goal):
+            calls["move"] += 1
+            self.goal = np.array(goal)
+
+    s = covsim.Scenario.from_dict(ROOM)
+    s.set("loops", {"mode": "periodic", "loop1_period": 0.1})
+    covsim.register_planner("py_counting", Counting)
+    covsim.register_planner("py_keeping", Keeping)
+    s.set("planner", {"type": "py_counting"})
+    assert covsim.Simulation(s).run()["converged"]
+    assert calls["move"] == 0
+    without = calls["set"]
+    calls.update(set=0, move=0)
+    s.set("planner", {"type": "py_keeping"})
+    assert covsim.Simulation(s).run()["converged"]
+    assert calls["move"] > 0 and calls["set"] + calls["move"] == without

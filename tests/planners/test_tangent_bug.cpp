@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include "planners/planner_run.hpp"
 #include "planners/tangent_bug.hpp"
@@ -42,6 +43,7 @@ void expect_projected(const Environment& env, Vec2 start, Vec2 goal, double rang
 }
 
 const double kRanges[] = {0.0, 0.5, INFINITY};
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 }  // namespace
 
 TEST_CASE("TangentBug reaches goals through a spiral corridor", "[tangent_bug]") {
@@ -108,4 +110,62 @@ TEST_CASE("TangentBug ends within its path budget even when cornered", "[tangent
   const Environment env({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {});
   for (double r : kRanges)
     expect_projected(env, {1, 1}, {5, 2}, r);
+}
+
+namespace {
+// The paper's U-shaped room: a slot from the top between x = 0.35 and 0.65 down to y = 0.35.
+Environment u_room() {
+  return Environment(
+      {{0, 0}, {1, 0}, {1, 1}, {0.65, 1}, {0.65, 0.35}, {0.35, 0.35}, {0.35, 1}, {0, 1}}, {});
+}
+}  // namespace
+
+TEST_CASE("TangentBug standing on the corner it headed for follows on in its direction of motion",
+          "[tangent_bug]") {
+  // From the left arm toward the right one: the slot's corner (0.35, 0.35) is the best node;
+  // there the heuristic stops falling, and the wall is followed the way the robot was moving
+  // (to the right, under the slot), not the way the goal lies (up the slot's side, round the
+  // whole room).
+  const Environment env = u_room();
+  const Vec2 start{0.3, 0.6}, goal{0.742, 0.799}, c1{0.35, 0.35}, c2{0.65, 0.35};
+  const double shortest = distance(start, c1) + distance(c1, c2) + distance(c2, goal);
+  for (double r : {0.5, kInfinity}) {
+    INFO("range " << r);
+    const PlannerRun run = go(env, start, goal, r);
+    CHECK(run.status == PlanStatus::reached);
+    CHECK(run.length <= shortest * (1.0 + 1e-9));
+  }
+}
+
+TEST_CASE("TangentBug keeps its episode while its goal moves", "[tangent_bug]") {
+  // A periodic loop 1 moves the goal a little every step while the robot turns the slot's
+  // corner. Kept episodes carry the robot under the slot; a restart at every move would head
+  // back to the corner behind (its straight-line heuristic is the better one) and shuttle.
+  const Environment env = u_room();
+  for (double r : {0.5, kInfinity}) {
+    INFO("range " << r);
+    TangentBug bug(TangentBugParams::for_environment(env.diameter(), boundary_length(env)));
+    Vec2 x{0.3, 0.6}, goal{0.83, 0.53};
+    const Vec2 end_goal{0.83, 0.74}, c1{0.35, 0.35}, c2{0.65, 0.35};  // the goal's last place
+    bug.set_goal(goal);
+    double length = 0.0;
+    PlanStatus status = PlanStatus::moving;
+    for (int k = 0; k < 2000 && status == PlanStatus::moving; ++k) {
+      if (k % 2 == 0 && !(goal == end_goal)) {
+        goal = Vec2{0.83, std::min(end_goal.y, goal.y + 0.003)};
+        bug.move_goal(goal);
+      }
+      const PlanStep s = bug.step(sense(env, x, r), 0.01);
+      const Vec2 next = env.advance(x, s.next);
+      REQUIRE(env.segment_inside(x, next));
+      length += distance(x, next);
+      x = next;
+      status = s.status;
+    }
+    CHECK(status == PlanStatus::reached);
+    CHECK(distance(x, goal) < 1e-6);
+    // The way round the corners to where the goal was reached, and the goal's own motion.
+    const double shortest = distance({0.3, 0.6}, c1) + distance(c1, c2) + distance(c2, goal);
+    CHECK(length <= shortest + distance({0.83, 0.53}, goal));
+  }
 }

@@ -61,15 +61,24 @@ TEST_CASE("TangentBug reaches office goals round the box and T-walls it used to 
 }
 
 namespace {
+struct GoalEntry {
+  Vec2 goal;
+  PlanStatus last;  // the planner's status when it was given
+  bool moved;       // through move_goal
+};
 // Wraps a planner and records every goal it is given.
 class GoalLog final : public Planner {
  public:
-  GoalLog(std::unique_ptr<Planner> inner, std::vector<std::pair<Vec2, PlanStatus>>* log)
+  GoalLog(std::unique_ptr<Planner> inner, std::vector<GoalEntry>* log)
       : inner_(std::move(inner)), log_(log) {}
   std::string_view name() const override { return inner_->name(); }
   void set_goal(Vec2 goal) override {
-    log_->emplace_back(goal, last_);
+    log_->push_back({goal, last_, false});
     inner_->set_goal(goal);
+  }
+  void move_goal(Vec2 goal) override {
+    log_->push_back({goal, last_, true});
+    inner_->move_goal(goal);
   }
   PlanStep step(const SensorReading& r, double max_step) override {
     const PlanStep s = inner_->step(r, max_step);
@@ -79,18 +88,19 @@ class GoalLog final : public Planner {
 
  private:
   std::unique_ptr<Planner> inner_;
-  std::vector<std::pair<Vec2, PlanStatus>>* log_;
+  std::vector<GoalEntry>* log_;
   PlanStatus last_ = PlanStatus::reached;
 };
 }  // namespace
 
 TEST_CASE("the controller hands a planner a goal again only when the target has moved",
           "[liveness]") {
+  std::size_t moved_goals = 0;
   for (const char* name : {"two_obstacles.json", "fig2c.json", "u_shape.json"}) {
     for (LoopMode mode : {LoopMode::classic, LoopMode::periodic}) {
       Scenario s = paper(name);
       s.coverage.mode = mode;
-      std::map<std::uint32_t, std::vector<std::pair<Vec2, PlanStatus>>> goals;
+      std::map<std::uint32_t, std::vector<GoalEntry>> goals;
       const PlannerSource source =
           planner_source(s.coverage.planner, PlannerContext{*s.environment, SensorSpec{}});
       const auto out = run_coverage(s, nullptr, nullptr, [&](std::uint32_t i) {
@@ -103,13 +113,17 @@ TEST_CASE("the controller hands a planner a goal again only when the target has 
       for (const auto& [robot, log] : goals) {
         for (std::size_t k = 1; k < log.size(); ++k) {
           // Never the same goal twice in a row, whatever the planner said of it.
-          CHECK(distance(log[k].first, log[k - 1].first) > tol);
-          projected_goals += log[k].second == PlanStatus::projected ? 1 : 0;
+          CHECK(distance(log[k].goal, log[k - 1].goal) > tol);
+          projected_goals += log[k].last == PlanStatus::projected ? 1 : 0;
+          // A robot on its way is told its goal moved; a settled one gets a new goal.
+          CHECK(log[k].moved == (log[k].last == PlanStatus::moving));
+          moved_goals += log[k].moved ? 1 : 0;
         }
       }
       if (std::string(name) == "fig2c.json") CHECK(projected_goals == 0);
     }
   }
+  CHECK(moved_goals > 0);  // periodic loop 1 moves goals under robots on their way
 }
 
 namespace {
