@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/canvas.hpp"
 #include "analysis/result_fields.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario_error.hpp"
@@ -87,6 +88,17 @@ std::vector<RobotTrack> RunFiles::tracks() const {
   for (const TrajectoryRow& r : trajectory)
     out.at(r.robot).push(r.t, r.position, r.virtual_generator, r.virtual_target, r.real_target);
   return out;
+}
+
+bool is_run_output(const std::string& name) {
+  if (name.ends_with(".partial")) return true;
+  for (const char* f :
+       {"scenario.json", "final.json", "trajectory.csv", "metrics.csv", "replay.html"})
+    if (name == f) return true;
+  for (const char* stem : {"scene.", "cost."})
+    for (FigureFormat format : {FigureFormat::svg, FigureFormat::pdf, FigureFormat::png})
+      if (name == stem + std::string(extension(format))) return true;
+  return false;
 }
 
 RunFiles read_run_files(const fs::path& dir) {

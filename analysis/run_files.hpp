@@ -31,6 +31,12 @@ struct RunFiles {
 // absolute, so the copy loads from anywhere, and robots drawn per seed written as drawn.
 nlohmann::json portable_scenario(const Scenario& scenario, const std::filesystem::path& dir);
 
+// Whether a file name in a run folder is what `covsim run` or `covsim plot` writes there
+// (scenario.json, final.json, trajectory.csv, metrics.csv, scene.* and cost.* figures,
+// replay.html, and their .partial files): a new run into the folder replaces these, and
+// keeps anything else.
+bool is_run_output(const std::string& name);
+
 // Throws ScenarioError naming the file (and line, for CSV) that is missing or malformed.
 RunFiles read_run_files(const std::filesystem::path& dir);
 

@@ -19,25 +19,13 @@
 #include "apps/scenario_options.hpp"
 #include "core/atomic_file.hpp"
 #include "core/fingerprint.hpp"
+#include "core/staged_folder.hpp"
 #include "core/trace.hpp"
 #include "scenarios/scenario_error.hpp"
 
 namespace covsim::app {
 
 namespace fs = std::filesystem;
-
-namespace {
-// Removes the folder this command writes a new run into (DIR.partial) if it fails.
-struct CreatedDirectory {
-  fs::path dir;
-  bool created = false;
-  bool keep = false;
-  ~CreatedDirectory() {
-    std::error_code ec;
-    if (created && !keep) fs::remove_all(dir, ec);
-  }
-};
-}  // namespace
 
 void add_run_command(CLI::App& app) {
   struct Options {
@@ -72,26 +60,22 @@ void add_run_command(CLI::App& app) {
             : fs::path("out") / fmt::format("{}-{}", fs::path(opts->scenario.file).stem().string(),
                                             *scenario.seed);
     if (!dir.has_filename()) dir = dir.parent_path();  // "out/run/"
-    // A new run folder appears whole or not at all: written as DIR.partial, renamed at the
-    // end. Into an existing folder each file is replaced whole.
-    fs::path work = dir;
-    CreatedDirectory guard;
+    // The run folder appears whole or not at all: written as DIR.partial and put in place
+    // at the end, over an existing DIR by one atomic exchange (what the earlier run wrote
+    // goes; other files stay).
     std::error_code ec;
-    if (!fs::exists(dir)) {
-      work = fs::path(dir.string() + ".partial");
-      fs::remove_all(work, ec);  // what a killed run left
-      guard.dir = work;
-      guard.created = fs::create_directories(work, ec);
-      if (ec)
-        throw InputError(
-            fmt::format("{}: cannot create directory: {}", dir.string(), ec.message()));
-    } else if (!fs::is_directory(dir)) {
-      throw InputError(dir.string() + ": exists and is not a directory");
-    } else {
-      // Partial files a killed run (SIGKILL) left behind.
+    if (fs::is_directory(dir, ec)) {
+      // Partial files a killed `covsim plot` left behind.
       for (const auto& entry : fs::directory_iterator(dir, ec))
         if (entry.path().extension() == ".partial") fs::remove(entry.path(), ec);
     }
+    std::unique_ptr<StagedFolder> folder;
+    try {
+      folder = std::make_unique<StagedFolder>(dir, is_run_output);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(e.what());
+    }
+    const fs::path work = folder->path();
     std::unique_ptr<TraceWriter> trace;
     if (!opts->trace.empty()) {
       const TraceHeader header =
@@ -116,14 +100,8 @@ void add_run_command(CLI::App& app) {
     final_file.commit();
     scene.commit();
     cost.commit();
-    if (work != dir) {
-      fs::rename(work, dir, ec);
-      if (ec)
-        throw std::runtime_error(fmt::format("{}: cannot rename {} into place: {}", dir.string(),
-                                             work.string(), ec.message()));
-    }
+    folder->commit();
     if (trace) trace->commit();
-    guard.keep = true;
 
     std::size_t projected = 0;
     for (const RobotOutcome& r : outcome.robots)

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "core/durable_sync.hpp"
+
 namespace covsim {
 
 AtomicFile::AtomicFile(std::filesystem::path path)
@@ -22,6 +24,7 @@ void AtomicFile::commit() {
   out_.flush();
   if (!out_) throw std::runtime_error(path_.string() + ": write failed");
   out_.close();
+  sync_to_disk(partial_);  // on the disk before its name is
   std::error_code ec;
   std::filesystem::rename(partial_, path_, ec);
   if (ec) throw std::runtime_error(path_.string() + ": cannot move into place: " + ec.message());

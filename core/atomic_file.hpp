@@ -16,7 +16,8 @@ class AtomicFile {
   ~AtomicFile();
 
   std::ostream& stream() { return out_; }
-  // Flushes, checks every write succeeded, and renames into place; throws on failure.
+  // Flushes, checks every write succeeded, syncs to the disk, and renames into place; throws
+  // on failure.
   void commit();
   const std::filesystem::path& path() const { return path_; }
 

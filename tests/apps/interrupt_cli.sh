@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SIGINT and SIGTERM stop a run or a sweep at the next event, leave no partial file and no
-# folder a run created (a new run folder is written as DIR.partial and appears whole at the
-# end), and exit 130 / 143; the interrupted sweep resumes to the same
-# results; a folder a killed run left partial files in is cleaned by the next run.
+# folder a run created (a run folder is written as DIR.partial and appears whole at the end,
+# over an existing one by an atomic exchange), and exit 130 / 143; the interrupted sweep
+# resumes to the same results; a run replaces an earlier run in its folder whole.
 # Usage: interrupt_cli.sh COVSIM SOURCE WORK
 set -euo pipefail
 covsim=$1 source=$2 work=$3
@@ -36,12 +36,28 @@ wait $pid
 [ -f run3/final.json ] && [ -f run3/trajectory.csv ] && [ ! -e run3.partial ] ||
   fail "run3 did not appear whole: $(ls -d run3*)"
 
-# Into an existing folder: nothing half-written stays, what was there stays.
-mkdir -p run2 && echo keep > run2/notes.txt && echo stale > run2/final.json.partial
-rc=$(interrupt INT run2/trajectory.csv.partial run "$office" --out run2)
+# Into an existing folder: an interrupted run leaves it exactly as it was (its run, the
+# user's files), and no partial file anywhere.
+"$covsim" run "$office" --out run2 --set convergence.max_time=20 > /dev/null
+echo keep > run2/notes.txt
+before=$(cd run2 && ls && cat final.json scenario.json | md5sum)
+echo stale > run2/final.json.partial  # what a killed `covsim plot` leaves
+rc=$(interrupt INT run2.partial/trajectory.csv.partial run "$office" --out run2)
 [ "$rc" -eq 130 ] && grep -q "interrupted by SIGINT" err.txt || fail "SIGINT: exit $rc: $(cat err.txt)"
-[ -z "$(find run2 -name '*.partial')" ] || fail "partial files left: $(ls run2)"
-[ -f run2/notes.txt ] || fail "the folder's own file went"
+[ -z "$(find . -name '*.partial')" ] || fail "partial files left: $(find . -name '*.partial')"
+[ "$(cd run2 && ls && cat final.json scenario.json | md5sum)" = "$before" ] ||
+  fail "the interrupted run changed the folder it was to replace: $(ls run2)"
+# Completed, a run replaces the earlier run whole: its figures in another format go, the
+# user's file stays, every run file is the new run's.
+"$covsim" run "$office" --out run2 --set convergence.max_time=40 --format png > new.txt
+[ -f run2/scene.png ] && [ ! -e run2/scene.svg ] && [ ! -e run2/cost.svg ] ||
+  fail "the earlier run's figures stayed: $(ls run2)"
+[ "$(cat run2/notes.txt)" = keep ] || fail "the folder's own file went"
+fp=$(sed -n 's/^fingerprint //p' new.txt)
+grep -q "\"fingerprint\": \"$fp\"" run2/final.json || fail "final.json is not the new run's"
+awk -F, 'NR > 1 && $1 > 30 { found = 1 } END { exit !found }' run2/trajectory.csv ||
+  fail "trajectory.csv is the earlier run's (20 s, not 40 s)"
+[ ! -e run2.partial ] && [ ! -e run2.replaced ] || fail "staging folders left: $(ls -d run2*)"
 
 # A sweep stops, keeps whole results only, and resumes to what an uninterrupted one gives.
 cat > sweep.json <<JSON
