@@ -85,6 +85,8 @@ nlohmann::json portable_scenario(const Scenario& scenario, const fs::path& dir) 
 
 std::vector<RobotTrack> RunFiles::tracks() const {
   std::vector<RobotTrack> out(outcome.robots.size());
+  for (RobotTrack& k : out)
+    k.tolerance = track_tolerance(scenario.environment->diameter());
   for (const TrajectoryRow& r : trajectory)
     out.at(r.robot).push(r.t, r.position, r.virtual_generator, r.virtual_target, r.real_target);
   return out;

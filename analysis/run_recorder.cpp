@@ -7,12 +7,14 @@
 namespace covsim {
 
 RunRecorder::RunRecorder(const std::filesystem::path& dir, const std::vector<Vec2>& starts,
-                         double trajectory_period)
+                         double trajectory_period, double track_tolerance)
     : trajectory_(dir / "trajectory.csv"),
       metrics_(dir / "metrics.csv"),
       period_(trajectory_period),
       tracks_(starts.size()),
       pending_(starts.size()) {
+  for (RobotTrack& k : tracks_)
+    k.tolerance = track_tolerance;
   trajectory_buffer_ = "t,robot,x,y,vx,vy,tx,ty,rx,ry\n";
   metrics_buffer_ = csv_header(metrics_fields()) + "\n";
   for (std::size_t i = 0; i < starts.size(); ++i) {

@@ -19,8 +19,10 @@ namespace covsim {
 class RunRecorder final : public CoverageObserver {
  public:
   // trajectory_period: seconds between a robot's rows; 0 records every motion step.
+  // track_tolerance: the tracks' (RobotTrack::tolerance; track_tolerance(Ω's diameter) for
+  // the figures), the files are exact.
   RunRecorder(const std::filesystem::path& dir, const std::vector<Vec2>& starts,
-              double trajectory_period = 0.0);
+              double trajectory_period = 0.0, double track_tolerance = 0.0);
   void on_motion(SimTime t, const Robot& r) override;
   void on_sample(SimTime t, const CoverageController& c) override;
   // A last sample at the end of the run.

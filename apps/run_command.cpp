@@ -82,7 +82,8 @@ void add_run_command(CLI::App& app) {
           trace_header_for(scenario, fs::path(opts->scenario.file).parent_path());
       trace = std::make_unique<TraceWriter>(opts->trace, header);
     }
-    RunRecorder recorder(work, scenario.robot_positions, scenario.recording.trajectory_period);
+    RunRecorder recorder(work, scenario.robot_positions, scenario.recording.trajectory_period,
+                         track_tolerance(scenario.environment->diameter()));
     const CoverageOutcome outcome = run_coverage(scenario, &recorder, trace.get());
 
     const FigureFormat format = *parse_figure_format(opts->format);
