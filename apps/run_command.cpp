@@ -11,6 +11,7 @@
 #include "analysis/figures.hpp"
 #include "analysis/final_json.hpp"
 #include "analysis/run_files.hpp"
+#include "analysis/run_progress.hpp"
 #include "analysis/run_recorder.hpp"
 #include "analysis/trace_replay.hpp"
 #include "apps/commands.hpp"
@@ -84,7 +85,8 @@ void add_run_command(CLI::App& app) {
     }
     RunRecorder recorder(work, scenario.robot_positions, scenario.recording.trajectory_period,
                          track_tolerance(scenario.environment->diameter()));
-    const CoverageOutcome outcome = run_coverage(scenario, &recorder, trace.get());
+    RunProgress progress(&recorder);  // a line on stderr during a long run, on a terminal
+    const CoverageOutcome outcome = run_coverage(scenario, &progress, trace.get());
 
     const FigureFormat format = *parse_figure_format(opts->format);
     const std::string ext(extension(format));

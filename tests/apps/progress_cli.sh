@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# A long run on a terminal shows a progress line on stderr and clears it at the end; with
+# stderr in a file it writes none. The terminal is a pseudo-terminal from util-linux's
+# `script`; without it the test is skipped (exit 77) and says why.
+# Usage: progress_cli.sh COVSIM SOURCE WORK
+set -euo pipefail
+covsim=$1 source=$2 work=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+command -v script > /dev/null || { echo "SKIP: util-linux's script is not installed"; exit 77; }
+# office's run lasts a few seconds: longer than the first quiet second.
+script -qec "$covsim run $source/scenarios/office.json --out tty" typescript > /dev/null
+grep -q "run: t = .* of 4000 s simulated (.*%), .*/30 robots settled" typescript ||
+  fail "no progress line on a terminal: $(tr '\r' '\n' < typescript | head -5)"
+# Cleared before the summary: the summary starts its line after a carriage return.
+tr '\r' '\n' < typescript | grep -q "^converged after" || fail "the progress line was not cleared"
+"$covsim" run "$source/scenarios/office.json" --out file > out.txt 2> err.txt
+[ ! -s err.txt ] || fail "progress written to a file: $(head -c 200 err.txt)"
+echo "progress ok"
