@@ -41,8 +41,8 @@ nlohmann::ordered_json to_json(const std::vector<Vec2>& ring) {
 nlohmann::ordered_json random_environment(const RandomEnvironmentSpec& spec) {
   if (spec.outer_vertices < 3 || spec.outer_vertices > 1000)
     throw std::invalid_argument("the outer ring needs 3 to 1000 vertices");
-  if (spec.robots < 1 || spec.robots > 1000)
-    throw std::invalid_argument("a scenario needs 1 to 1000 robots");
+  if (spec.robots < 1 || spec.robots > 100000)
+    throw std::invalid_argument("a scenario needs 1 to 100000 robots");
   if (spec.holes > 100) throw std::invalid_argument("at most 100 holes");
   if (!(spec.size > 0.0) || !std::isfinite(spec.size))
     throw std::invalid_argument("the size must be a positive number");
@@ -80,19 +80,34 @@ nlohmann::ordered_json random_environment(const RandomEnvironmentSpec& spec) {
     holes.push_back(std::move(ring));
   }
   const Environment env(outer, holes);  // validates: throws GeometryError if anything is off
-  // Robots: points of Ω away from ∂Ω and from each other.
+  // Robots: points of Ω away from ∂Ω and from each other, by dart throwing. The distance
+  // kept is 2% of the size, or for many robots half the spacing of N robots at constant
+  // density, sqrt(area / N) / 2 (dart throwing fills about half the plane with discs of
+  // that spacing's diameter); a grid of cells that side long finds the near robots.
   RandomStream robot_rng(spec.seed, 0, "random-environment-robots");
   std::vector<Vec2> robots;
-  const double apart = 0.02 * s;
-  for (int attempt = 0; attempt < 100000 && robots.size() < spec.robots; ++attempt) {
+  const double apart =
+      std::min(0.02 * s, 0.5 * std::sqrt(env.area() / static_cast<double>(spec.robots)));
+  const auto cells = static_cast<std::size_t>(std::ceil(s / apart));
+  std::vector<std::vector<std::uint32_t>> grid(cells * cells);
+  const auto cell_of = [&](double v) {
+    return std::min(cells - 1, static_cast<std::size_t>(std::max(0.0, v / apart)));
+  };
+  const std::uint64_t attempts = 100000 + 200 * static_cast<std::uint64_t>(spec.robots);
+  for (std::uint64_t attempt = 0; attempt < attempts && robots.size() < spec.robots; ++attempt) {
     const Vec2 p{robot_rng.uniform(0.0, s), robot_rng.uniform(0.0, s)};
     if (!env.contains(p)) continue;
+    const std::size_t cx = cell_of(p.x), cy = cell_of(p.y);
     bool ok = true;
+    for (std::size_t x = cx > 0 ? cx - 1 : 0; ok && x <= std::min(cells - 1, cx + 1); ++x)
+      for (std::size_t y = cy > 0 ? cy - 1 : 0; ok && y <= std::min(cells - 1, cy + 1); ++y)
+        for (std::uint32_t q : grid[x * cells + y])
+          ok = ok && distance(p, robots[q]) >= apart;
     for (const BoundaryEdge& e : env.boundary())
       ok = ok && distance(p, project_to_segment(p, e.a, e.b).point) >= apart;
-    for (Vec2 q : robots)
-      ok = ok && distance(p, q) >= apart;
-    if (ok) robots.push_back(p);
+    if (!ok) continue;
+    grid[cx * cells + cy].push_back(static_cast<std::uint32_t>(robots.size()));
+    robots.push_back(p);
   }
   if (robots.size() < spec.robots)
     throw std::invalid_argument("could not place the robots: the environment is too narrow");

@@ -5,8 +5,10 @@
 // The outer ring is star-shaped about the centre of a `size` x `size` square (vertices at
 // jittered angles and random radii), so it is simple and usually non-convex. Holes are
 // convex polygons inscribed in circles that keep a clearance from the outer ring and from
-// each other, placed by rejection. Robots start at random points of Ω, apart from each
-// other and from ∂Ω. The result is validated as a scenario before it is returned.
+// each other, placed by rejection. Robots (up to 100 000) start at random points of Ω,
+// apart from each other and from ∂Ω by 2% of the size, or for many robots by half the
+// spacing of robots at constant density (sqrt(area / N) / 2), so that a size growing as
+// sqrt(N) keeps the density. The result is validated as a scenario before it is returned.
 #include <cstdint>
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -235,6 +236,29 @@ TEST_CASE("random environments are valid scenarios, the same for the same seed",
   RandomEnvironmentSpec bad;
   bad.robots = 0;
   CHECK_THROWS_AS(random_environment(bad), std::invalid_argument);
+}
+
+TEST_CASE("random environments hold ten thousand robots at constant density", "[scenario]") {
+  // 700 robots used to be the most any size held: their distance did not shrink with N.
+  for (std::uint32_t n : {1000u, 10000u}) {
+    RandomEnvironmentSpec spec;
+    spec.robots = n;
+    spec.size = 0.4 * std::sqrt(static_cast<double>(n));  // about the same density
+    const nlohmann::ordered_json a = random_environment(spec);
+    const Scenario s = parse_scenario(nlohmann::json::parse(a.dump()), "random", ".");
+    REQUIRE(s.robot_positions.size() == n);
+    // Apart by at least half the constant-density spacing (checked on a sorted sweep).
+    const double apart = 0.5 * std::sqrt(s.environment->area() / n) * (1 - 1e-12);
+    std::vector<Vec2> p = s.robot_positions;
+    std::sort(p.begin(), p.end(), [](Vec2 u, Vec2 v) { return u.x < v.x; });
+    double closest = INFINITY;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t j = i + 1; j < p.size() && p[j].x - p[i].x < apart; ++j)
+        closest = std::min(closest, distance(p[i], p[j]));
+    CHECK(closest >= apart);
+    for (Vec2 q : p)
+      CHECK(s.environment->contains(q));
+  }
 }
 
 TEST_CASE("robots drawn per seed: each seed a deployment, the same on every load",
