@@ -14,6 +14,7 @@
 #include "core/geometry/environment.hpp"
 #include "robot/coverage_config.hpp"
 #include "scenarios/recording_config.hpp"
+#include "scenarios/run_limits.hpp"
 
 namespace covsim {
 
@@ -29,6 +30,7 @@ struct Scenario {
   std::optional<std::uint64_t> seed;
   CoverageConfig coverage;  // the controller's settings, defaults where the file is silent
   RecordingConfig recording;
+  RunLimits limits;
 };
 
 // Throws ScenarioError naming the file, the JSON path and what was expected: malformed

@@ -79,6 +79,8 @@ nlohmann::ordered_json describe_scenario(const Scenario& s) {
                         {"max_time", seconds(c.max_time)}};
   out["metrics"] = {{"period", seconds(c.sample_period)}};
   out["recording"] = {{"trajectory_period", s.recording.trajectory_period}};
+  out["limits"] = {{"motion_steps", s.limits.motion_steps},
+                   {"trajectory_rows", s.limits.trajectory_rows}};
   // Only a scenario with a network has one: without, robots know each other's state at once.
   if (s.json.contains("network") && !s.json.at("network").is_null()) {
     const NetworkConfig& n = c.network;

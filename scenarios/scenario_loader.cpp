@@ -26,7 +26,6 @@ constexpr double kMinPeriod = 1e-4;        // s
 constexpr double kMaxCoordinate = 1e6;     // m
 constexpr double kMinExtent = 1e-3;        // m: Ω's box diagonal
 constexpr double kMinRelativeEdge = 1e-6;  // an edge against Ω's box diagonal
-constexpr double kMaxMotionSteps = 1e8;    // max_time / loop2_period
 
 std::shared_ptr<const Environment> read_environment(const JsonValue& v) {
   v.only_keys({"outer", "holes"});
@@ -187,16 +186,6 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     if (auto t = v->find("virtual_tolerance")) c.virtual_tolerance = t->positive();
     if (auto t = v->find("max_time")) c.max_time = read_period(*t);
   }
-  // A bound on the run's length: motion steps of every robot until max_time.
-  if (c.max_time.seconds() / c.loop2_period.seconds() > kMaxMotionSteps) {
-    const auto at = root.find("convergence") && root.at("convergence").find("max_time")
-                        ? *root.at("convergence").find("max_time")
-                        : root;
-    at.fail(fmt::format(
-        "max_time {:g} s at a loop-2 period of {:g} s is more than {:g} motion steps per robot; "
-        "lower max_time or raise loops.loop2_period",
-        c.max_time.seconds(), c.loop2_period.seconds(), kMaxMotionSteps));
-  }
   if (auto m = root.find("metrics")) {
     m->only_keys({"period"});
     c.sample_period = read_period(m->at("period"));
@@ -325,6 +314,38 @@ std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
   return out;
 }
 
+// The run's size before it starts: motion steps per robot and trajectory rows, each against
+// its limit (raised in "limits"); the error points at max_time, what makes a run long.
+void check_limits(const JsonValue& root, Scenario& s) {
+  if (auto l = root.find("limits")) {
+    l->only_keys({"motion_steps", "trajectory_rows"});
+    if (auto m = l->find("motion_steps")) s.limits.motion_steps = m->positive();
+    if (auto m = l->find("trajectory_rows")) s.limits.trajectory_rows = m->positive();
+  }
+  const CoverageConfig& c = s.coverage;
+  const auto at = root.find("convergence") && root.at("convergence").find("max_time")
+                      ? *root.at("convergence").find("max_time")
+                      : root;
+  const double steps = c.max_time.seconds() / c.loop2_period.seconds();
+  if (steps > s.limits.motion_steps) {
+    at.fail(fmt::format(
+        "max_time {:g} s at a loop-2 period of {:g} s is {:g} motion steps per robot, more than "
+        "limits.motion_steps ({:g}); lower max_time, raise loops.loop2_period, or raise the limit",
+        c.max_time.seconds(), c.loop2_period.seconds(), steps, s.limits.motion_steps));
+  }
+  const double period = std::max(c.loop2_period.seconds(), s.recording.trajectory_period);
+  const double rows =
+      static_cast<double>(s.robot_positions.size()) * (c.max_time.seconds() / period + 2.0);
+  if (rows > s.limits.trajectory_rows) {
+    at.fail(fmt::format(
+        "{} robots until max_time {:g} s write up to {:.3g} rows of trajectory.csv (about {:.0f} "
+        "MB), more than limits.trajectory_rows ({:g}); lower max_time, thin the file with "
+        "recording.trajectory_period, or raise the limit",
+        s.robot_positions.size(), c.max_time.seconds(), rows, rows * 150e-6,
+        s.limits.trajectory_rows));
+  }
+}
+
 }  // namespace
 
 Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
@@ -334,7 +355,7 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   s.json = json;
   const JsonValue root(s.json, source);
   root.only_keys({"environment", "density", "robots", "seed", "planner", "controller", "sensor",
-                  "loops", "convergence", "metrics", "network", "recording"});
+                  "loops", "convergence", "metrics", "network", "recording", "limits"});
   if (auto seed = root.find("seed")) s.seed = seed->unsigned_integer();
   s.base_dir = base_dir;
   s.environment = read_environment(root.at("environment"));
@@ -345,6 +366,7 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
     r->only_keys({"trajectory_period"});
     if (auto p = r->find("trajectory_period")) s.recording.trajectory_period = p->non_negative();
   }
+  check_limits(root, s);
   // Checks that need the environment (grids too fine for it) fail here, not at a run's start.
   const auto check = [&](const auto& entry, const Params& params, const char* key) {
     if (!entry.check) return;

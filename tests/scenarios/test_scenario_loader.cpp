@@ -387,6 +387,23 @@ TEST_CASE("sizes and periods beyond the stated limits are refused, naming the pl
       "{" + kSquare + R"(, "density": {"type": "uniform"}, "loops": {"loop2_period": 0.001},
       "convergence": {"max_time": 200000}})",
       "$.convergence.max_time: max_time 200000 s at a loop-2 period of 0.001 s");
+  // ... unless the limit is raised deliberately.
+  CHECK_NOTHROW(load_scenario(write("long.json", "{" + kSquare + R"(, "density": {"type":
+      "uniform"}, "loops": {"loop2_period": 0.001}, "convergence": {"max_time": 200000},
+      "limits": {"motion_steps": 3e8}})")));
+  // A trajectory.csv of more than 2e7 rows: refused, unless thinned or the limit raised.
+  const std::string many = "{" + kSquare + R"(, "density": {"type": "uniform"},
+      "robots": {"count": 100, "start": {"uniform": true}}, "seed": 1,
+      "convergence": {"max_time": 30000})";
+  expect_error(many + "}",
+               "$.convergence.max_time: 100 robots until max_time 30000 s write up to 3e+07 rows "
+               "of trajectory.csv");
+  CHECK_NOTHROW(
+      load_scenario(write("thin.json", many + R"(, "recording": {"trajectory_period": 1}})")));
+  CHECK_NOTHROW(
+      load_scenario(write("raised.json", many + R"(, "limits": {"trajectory_rows": 1e8}})")));
+  expect_error(many + R"(, "limits": {"trajectory_rows": -1}})",
+               "$.limits.trajectory_rows: expected a positive number");
   // At the limits themselves: accepted.
   CHECK_NOTHROW(load_scenario(write("big.json", R"({"environment": {"outer": [[-1e6, -1e6],
       [1e6, -1e6], [1e6, 1e6], [-1e6, 1e6]]}, "density": {"type": "uniform"}})")));
