@@ -23,15 +23,18 @@ NetworkSample NetworkMetrics::sample(const CoverageController& c) const {
   const auto* net = dynamic_cast<const NetworkedView*>(&c.view());
   const std::vector<Vec2>& positions = c.positions();
   const std::size_t n = positions.size();
+  // The ideal network: every robot knows everything at once, over a complete graph.
+  if (net == nullptr) {
+    s.graph = complete_graph_metrics(n);
+    return s;
+  }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
   for (std::uint32_t a = 0; a < n; ++a) {
     for (std::uint32_t b = a + 1; b < n; ++b) {
-      if (net == nullptr || net->channel().in_reach(positions[a], positions[b]))
-        edges.emplace_back(a, b);
+      if (net->channel().in_reach(positions[a], positions[b])) edges.emplace_back(a, b);
     }
   }
   s.graph = comm_graph_metrics(n, edges);
-  if (net == nullptr) return s;  // every robot knows everything at once
   double sum = 0.0;
   std::size_t count = 0;
   // Entries past the staleness limit are as good as gone (loop 1 drops them before use).

@@ -52,4 +52,15 @@ CommGraphMetrics comm_graph_metrics(
   return m;
 }
 
+CommGraphMetrics complete_graph_metrics(std::size_t n) {
+  CommGraphMetrics m;
+  if (n == 0) return m;
+  m.components = 1;
+  m.largest_component = n;
+  m.diameter = n >= 2 ? 1 : 0;
+  m.average_degree = static_cast<double>(n - 1);
+  m.algebraic_connectivity = n >= 2 ? static_cast<double>(n) : 0.0;
+  return m;
+}
+
 }  // namespace covsim

@@ -19,8 +19,15 @@ struct CommGraphMetrics {
   double algebraic_connectivity = 0.0;
 };
 
-// n nodes; edges as pairs of node indices (each once).
+// n nodes; edges as pairs of node indices (each once). Costs O(n (n + edges)) for the
+// diameter (a search from every node) and O(n³) for the algebraic connectivity (a dense
+// eigensolver).
 CommGraphMetrics comm_graph_metrics(
     std::size_t n, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges);
+
+// The same for the complete graph on n nodes (the ideal network: every robot hears every
+// other), in closed form: one component, diameter 1, degree n - 1, and algebraic
+// connectivity n (the Laplacian nI - J has eigenvalues 0 and n).
+CommGraphMetrics complete_graph_metrics(std::size_t n);
 
 }  // namespace covsim

@@ -157,3 +157,20 @@ TEST_CASE("communication graph measures on known graphs", "[net]") {
   CHECK(split.diameter == 1);
   CHECK(split.algebraic_connectivity == 0.0);
 }
+
+TEST_CASE("the complete graph's measures in closed form equal the general ones", "[net]") {
+  for (std::size_t n = 0; n <= 40; ++n) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (std::uint32_t a = 0; a < n; ++a)
+      for (std::uint32_t b = a + 1; b < n; ++b)
+        edges.emplace_back(a, b);
+    const CommGraphMetrics general = comm_graph_metrics(n, edges);
+    const CommGraphMetrics closed = complete_graph_metrics(n);
+    INFO("n = " << n);
+    CHECK(closed.components == general.components);
+    CHECK(closed.largest_component == general.largest_component);
+    CHECK(closed.diameter == general.diameter);
+    CHECK(closed.average_degree == Approx(general.average_degree));
+    CHECK(closed.algebraic_connectivity == Approx(general.algebraic_connectivity).epsilon(1e-12));
+  }
+}
