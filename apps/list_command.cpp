@@ -29,6 +29,9 @@ std::string reads(const Entry&) {
 std::string reads(const PlannerEntry& e) {
   return e.reads_range ? "    reads the range sensor: its steps depend on sensor.range\n" : "";
 }
+std::string reads(const LawEntry& e) {
+  return e.autonomous ? "" : "    targets set by a driving program: never converges by itself\n";
+}
 
 template <class Entry>
 void print(const Registry<Entry>& r, const std::string& heading, const std::string& key,
@@ -55,6 +58,7 @@ void add_list_command(CLI::App& app) {
     std::string what;
     bool names = false;
     bool reads_range = false;
+    bool autonomous = false;
     std::vector<std::string> plugins;
   };
   auto o = std::make_shared<Options>();
@@ -65,6 +69,8 @@ void add_list_command(CLI::App& app) {
   cmd->add_flag("--names", o->names, "Names only, one per line");
   cmd->add_flag("--reads-range", o->reads_range,
                 "Planners only: those whose steps depend on the range sensor's range");
+  cmd->add_flag("--autonomous", o->autonomous,
+                "Laws only: those that compute their own targets (not set by a driving program)");
   add_plugin_option(cmd, o->plugins);
   cmd->callback([o] {
     load_plugins(o->plugins);
@@ -73,6 +79,8 @@ void add_list_command(CLI::App& app) {
     if (o->reads_range && o->what != "planners")
       throw InputError(
           "list: --reads-range applies to planners only (list planners --reads-range)");
+    if (o->autonomous && o->what != "laws")
+      throw InputError("list: --autonomous applies to laws only (list laws --autonomous)");
     const auto gap = [&] {
       if (all) std::cout << '\n';
     };
@@ -82,7 +90,10 @@ void add_list_command(CLI::App& app) {
                                          : std::function<bool(const PlannerEntry&)>{}),
           gap();
     if (all || o->what == "laws")
-      print(coverage_law_registry(), "coverage laws", "\"controller\": {\"type\"}", o->names),
+      print<LawEntry>(coverage_law_registry(), "coverage laws", "\"controller\": {\"type\"}",
+                      o->names,
+                      o->autonomous ? [](const LawEntry& e) { return e.autonomous; }
+                                    : std::function<bool(const LawEntry&)>{}),
           gap();
     if (all || o->what == "loss")
       print(loss_registry(), "loss models", "\"network\": {\"loss\": {\"model\"}}", o->names),

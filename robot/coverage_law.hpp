@@ -68,6 +68,9 @@ struct LawEntry : ComponentInfo {
   std::function<std::unique_ptr<CoverageLaw>(const LawContext&, const Params&)> make;
   // Optional: checks that need the environment, run when a scenario is loaded.
   std::function<void(const Environment&, const Params&)> check;
+  // Whether it computes its own targets (a coverage law proper); false for a law whose
+  // targets a driving program sets (external), which comparisons of laws leave out.
+  bool autonomous = true;
 };
 
 // A scenario's "controller": the law, and its parameters validated against its schema.

@@ -12,6 +12,7 @@ LawEntry external_law_entry() {
   e.name = "external";
   e.description = "targets set by the program driving the simulation (Simulation::set_target)";
   e.make = [](const LawContext&, const Params&) { return std::make_unique<ExternalLaw>(); };
+  e.autonomous = false;
   return e;
 }
 

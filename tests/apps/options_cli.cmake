@@ -132,6 +132,14 @@ if(NOT ranged_out STREQUAL "tangent_bug\npotential_field\n" OR NOT every_out MAT
   message(FATAL_ERROR "list planners --reads-range: '${ranged_out}' of '${every_out}'")
 endif()
 bad("--reads-range on laws" "applies to planners only" list laws --reads-range)
+# `list laws --autonomous`: the laws a comparison runs, without the one a program drives.
+run_ok(own list laws --names --autonomous)
+run_ok(laws list laws --names)
+if(NOT own_out STREQUAL "virtual_generators\neuclidean_lloyd\ngeodesic_lloyd\n" OR NOT laws_out
+   MATCHES "external")
+  message(FATAL_ERROR "list laws --autonomous: '${own_out}' of '${laws_out}'")
+endif()
+bad("--autonomous on planners" "applies to laws only" list planners --autonomous)
 
 # random-env's seed is read strictly, as run's is.
 bad("random-env --seed -1" "--seed: expected a whole number" random-env --seed -1)
