@@ -78,9 +78,10 @@ void TangentBug::move_goal(Vec2 goal) {
   bound_ += shift;
   d_followed_ += shift;
   idle_steps_ = 0;
-  // A leave heads for the visible point nearest the old goal: motion to the new one instead,
-  // still held to the bound the leave set.
-  if (mode_ == Mode::leave) resume_motion_to_goal();
+  // A leave stays committed to its point (turned into motion toward the moved goal, it can
+  // meet the wall it left and walk round it again); an approach heads for the goal as it is
+  // now, so that the wall it meets is followed the way the robot was going.
+  if (mode_ == Mode::approach) heading_ = goal_;
 }
 
 PlanStep TangentBug::finish(Vec2 at, PlanStatus s) {

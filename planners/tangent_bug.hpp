@@ -35,7 +35,8 @@
 // good enough stays so. Without this, a target moved every period restarts motion to goal
 // each time, and a robot just past a corner heads back to it (the straight-line heuristic
 // of the corner behind beats the one ahead) and shuttles there for as long as the target
-// moves. A goal moved while the robot walks to a projection, or after it ended, starts
+// moves. A leave under way stays committed to its point; an approach heads for the goal as
+// it is now. A goal moved while the robot walks to a projection, or after it ended, starts
 // afresh.
 //
 // What was learned by walking round an obstacle stays across goals: a later goal inside it
