@@ -90,15 +90,15 @@ void CoverageController::loop1(std::uint32_t i) {
   // by more than the tolerance: a target inside a thin wall that crosses the wall's midline
   // by less than the tolerance moves its projection to the far face, and the robot, never
   // handed that target (it has not moved enough), would otherwise wait for ever.
-  const auto at_closest_point = [&](Vec2 goal) {
-    return std::fabs(distance(r.position, goal) - distance(env_.closest_point(goal), goal)) <=
-           tol_.position;
+  const auto at_closest_point = [&](Vec2 goal, Vec2 closest) {
+    return std::fabs(distance(r.position, goal) - distance(closest, goal)) <= tol_.position;
   };
   const bool at_target = r.projected
-                             ? at_closest_point(r.virtual_target) ||
+                             ? at_closest_point(r.virtual_target, r.real_target) ||
                                    (r.status == PlanStatus::projected &&
                                     distance(r.virtual_target, r.assigned) <= tol_.position &&
-                                    !env_.contains(r.assigned) && at_closest_point(r.assigned))
+                                    !env_.contains(r.assigned) &&
+                                    at_closest_point(r.assigned, env_.closest_point(r.assigned)))
                              : distance(r.real_target, r.position) <= tol_.position;
   r.stable = is_settled(r.status) && at_target && law_->at_rest(r, tol_);
   if (r.stable) return;

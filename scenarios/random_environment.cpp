@@ -7,6 +7,8 @@
 
 #include "core/geometry/environment.hpp"
 #include "core/random_stream.hpp"
+#include "robot/coverage_config.hpp"
+#include "scenarios/run_limits.hpp"
 
 namespace covsim {
 
@@ -120,13 +122,14 @@ nlohmann::ordered_json random_environment(const RandomEnvironmentSpec& spec) {
   out["robots"]["positions"] = to_json(robots);
   out["seed"] = spec.seed;
   // Room to cross the environment several times at the default speed (0.1 m/s).
-  out["convergence"] = {{"max_time", 300.0 * s}};
-  // Many robots: a trajectory row per robot per second or fewer (1, 2 or 5 times a power of
-  // ten seconds apart), so that the file stays under 10 million rows (limits.trajectory_rows
-  // is 2e7).
-  const double rows_per_robot = 1e7 / static_cast<double>(spec.robots);
-  if (300.0 * s / 0.1 > rows_per_robot) {
-    const double wanted = 300.0 * s / rows_per_robot;
+  const double max_time = 300.0 * s;
+  out["convergence"] = {{"max_time", max_time}};
+  // Many robots: trajectory rows 1, 2 or 5 times a power of ten seconds apart, so that the
+  // file stays under half the default limits.trajectory_rows.
+  const double rows_per_robot =
+      0.5 * RunLimits{}.trajectory_rows / static_cast<double>(spec.robots);
+  if (max_time / CoverageConfig{}.loop2_period.seconds() > rows_per_robot) {
+    const double wanted = max_time / rows_per_robot;
     double period = std::pow(10.0, std::floor(std::log10(wanted)));
     for (double m : {1.0, 2.0, 5.0, 10.0}) {
       if (m * period >= wanted) {

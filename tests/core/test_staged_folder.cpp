@@ -17,6 +17,11 @@ std::string read(const fs::path& p) {
   std::ifstream in(p);
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
+// A folder holding result.txt with `text`.
+void folder_with(const fs::path& dir, const std::string& text) {
+  fs::create_directories(dir);
+  write(dir / "result.txt", text);
+}
 bool owned(const std::string& name) {
   return name == "result.txt" || name == "figure.svg";
 }
@@ -68,19 +73,15 @@ TEST_CASE("a staged folder recovers what a killed commit left", "[staged_folder]
   const fs::path dir = fresh("killed");
   const fs::path replaced = dir.string() + ".replaced", staging = dir.string() + ".partial";
   SECTION("killed between the two renames: the old folder is put back") {
-    fs::create_directories(replaced);
-    write(replaced / "result.txt", "old");
-    fs::create_directories(staging);
-    write(staging / "result.txt", "half");
+    folder_with(replaced, "old");
+    folder_with(staging, "half");
     StagedFolder f(dir, owned);
     CHECK(read(dir / "result.txt") == "old");
     CHECK(fs::is_empty(f.path()));
   }
   SECTION("killed after the new folder was in place: the old one is removed") {
-    fs::create_directories(replaced);
-    write(replaced / "result.txt", "old");
-    fs::create_directories(dir);
-    write(dir / "result.txt", "new");
+    folder_with(replaced, "old");
+    folder_with(dir, "new");
     StagedFolder f(dir, owned);
     CHECK(read(dir / "result.txt") == "new");
     CHECK_FALSE(fs::exists(replaced));
