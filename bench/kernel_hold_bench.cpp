@@ -61,5 +61,5 @@ void BM_PriorityQueueHold(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_KernelHold)->Arg(1000)->Arg(10000)->Arg(100000);
-BENCHMARK(BM_PriorityQueueHold)->Arg(1000)->Arg(10000)->Arg(100000);
+BENCHMARK(BM_KernelHold)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000);
+BENCHMARK(BM_PriorityQueueHold)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000);

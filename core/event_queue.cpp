@@ -4,22 +4,35 @@
 
 namespace covsim {
 
-namespace {
-constexpr std::size_t kArity = 4;
-}
-
-bool EventQueue::tie_before(const Entry& a, const Entry& b) const {
+bool EventQueue::runs_later(const Entry& a, const Entry& b) const {
   const Record& ra = records_[a.record];
   const Record& rb = records_[b.record];
-  if (ra.priority != rb.priority) return ra.priority < rb.priority;
-  if (ra.entity != rb.entity) return ra.entity < rb.entity;
-  return ra.seq < rb.seq;
+  if (ra.priority != rb.priority) return ra.priority > rb.priority;
+  if (ra.entity != rb.entity) return ra.entity > rb.entity;
+  return ra.seq > rb.seq;
 }
 
 const EventQueue::Record* EventQueue::scheduled(EventHandle h) const {
   if (h.slot >= records_.size()) return nullptr;
   const Record& r = records_[h.slot];
   return (r.generation == h.generation && r.state == State::scheduled) ? &r : nullptr;
+}
+
+void EventQueue::insert(const Entry& e) {
+  if (e.key == last_) {
+    front_.push_back(e);
+    std::push_heap(front_.begin(), front_.end(),
+                   [this](const Entry& x, const Entry& y) { return runs_later(x, y); });
+    return;
+  }
+  put(bucket_of(e.key), e);
+}
+
+int EventQueue::lowest_occupied() const {
+  for (int w = 0; w < kWords; ++w) {
+    if (occupied_[w] != 0) return w * 64 + std::countr_zero(occupied_[w]);
+  }
+  return -1;
 }
 
 EventHandle EventQueue::push(SimTime t, EventKind kind, EntityId entity, Priority priority,
@@ -40,21 +53,17 @@ EventHandle EventQueue::push(SimTime t, EventKind kind, EntityId entity, Priorit
   r.kind = kind;
   r.priority = priority;
   r.state = State::scheduled;
-  const Entry e{t.ns(), index};
-  if (hole_at_root_) {
-    hole_at_root_ = false;
-    sift_down(0, e);
-  } else {
-    heap_.push_back(e);
-    sift_up(heap_size() - 1, e);
-  }
+  const std::uint64_t key = key_of(t);
+  if (key < last_) [[unlikely]]
+    rebase(key);
+  insert(Entry{key, index});
   ++live_;
   return EventHandle{index, r.generation};
 }
 
 bool EventQueue::cancel(EventHandle h) {
   if (scheduled(h) == nullptr) return false;
-  // The record stays (frozen) until its heap entry surfaces or the heap is compacted.
+  // The record stays (frozen) until its entry is dropped.
   records_[h.slot].state = State::cancelled;
   ++records_[h.slot].generation;
   --live_;
@@ -82,87 +91,105 @@ void EventQueue::free_record(std::uint32_t index) {
   free_records_.push_back(index);
 }
 
-std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
-  drop_cancelled_top();
-  if (heap_size() == 0 || at(0).time > not_after.ns()) return std::nullopt;
-  const Entry top = at(0);
-  hole_at_root_ = true;
-  const Record& r = records_[top.record];
-  const Popped p{Event{SimTime::from_ns(top.time), r.kind, r.priority, r.entity, r.payload, {}},
-                 r.timer};
-  free_record(top.record);
-  --live_;
-  return p;
-}
-
-void EventQueue::fill_hole() {
-  if (!hole_at_root_) return;
-  hole_at_root_ = false;
-  const Entry last = heap_.back();
-  heap_.pop_back();
-  if (heap_size() > 0) sift_down(0, last);
-}
-
-void EventQueue::drop_cancelled_top() {
-  fill_hole();
-  // With nothing cancelled there is nothing to skip, and no need to touch the records.
-  while (cancelled_ > 0 && heap_size() > 0 && records_[at(0).record].state == State::cancelled) {
-    free_record(at(0).record);
-    --cancelled_;
-    hole_at_root_ = true;
-    fill_hole();
-  }
-}
-
-void EventQueue::sift_up(std::size_t i, Entry e) {
-  while (i > 0) {
-    const std::size_t parent = (i - 1) / kArity;
-    if (!before(e, at(parent))) break;
-    at(i) = at(parent);
-    i = parent;
-  }
-  at(i) = e;
-}
-
-void EventQueue::sift_down(std::size_t i, Entry e) {
-  const std::size_t n = heap_size();
-  for (;;) {
-    const std::size_t first = kArity * i + 1;
-    if (first >= n) break;
-    const std::size_t last = std::min(first + kArity, n);
-    // The smallest child, chosen on time by conditional moves (which child wins is
-    // unpredictable, so branches would mispredict); exact time ties are rare and take
-    // the full comparison on a predictable branch.
-    std::size_t best = first;
-    for (std::size_t c = first + 1; c < last; ++c) {
-      bool less = at(c).time < at(best).time;
-      if (at(c).time == at(best).time) [[unlikely]]
-        less = tie_before(at(c), at(best));
-      best = less ? c : best;
-    }
-    if (!before(at(best), e)) break;
-    at(i) = at(best);
-    i = best;
-  }
-  at(i) = e;
-}
-
-void EventQueue::maybe_compact() {
-  // Amortised O(1): a rebuild costs O(heap size) and happens only once cancelled entries
-  // are the majority.
-  if (cancelled_ < 64 || cancelled_ <= live_) return;
-  fill_hole();
+void EventQueue::drop_cancelled(std::vector<Entry>& bucket) {
   const auto cancelled = [this](const Entry& e) {
     if (records_[e.record].state != State::cancelled) return false;
     free_record(e.record);
+    --cancelled_;
     return true;
   };
-  heap_.erase(std::remove_if(heap_.begin() + kRoot, heap_.end(), cancelled), heap_.end());
-  cancelled_ = 0;
-  const std::size_t n = heap_size();
-  if (n < 2) return;
-  for (std::size_t i = (n - 2) / kArity + 1; i-- > 0;)
-    sift_down(i, at(i));
+  bucket.erase(std::remove_if(bucket.begin(), bucket.end(), cancelled), bucket.end());
+}
+
+bool EventQueue::refill(std::uint64_t limit) {
+  for (int b = lowest_occupied(); b >= 0; b = lowest_occupied()) {
+    std::vector<Entry>& bucket = buckets_[b];
+    if (cancelled_ > 0) drop_cancelled(bucket);
+    if (bucket.empty()) {
+      unmark(b);
+      least_[b] = UINT64_MAX;
+      continue;
+    }
+    const std::uint64_t least = least_[b];
+    if (least > limit) return false;
+    // Every entry of the bucket agrees with `least` on its digit and above, so each moves
+    // to a lower bucket or the front; entries of other buckets keep theirs.
+    last_ = least;
+    unmark(b);
+    least_[b] = UINT64_MAX;
+    for (const Entry& e : bucket) {
+      if (e.key == least) {
+        front_.push_back(e);
+        __builtin_prefetch(&records_[e.record]);
+      } else {
+        const int to = bucket_of(e.key);
+        put(to, e);
+        // An entry in the lowest digit's buckets pops within a few events; fetching its
+        // record now hides the one cache miss a pop has when many events are pending.
+        if (to < kDigits) __builtin_prefetch(&records_[e.record]);
+      }
+    }
+    bucket.clear();
+    std::make_heap(front_.begin(), front_.end(),
+                   [this](const Entry& x, const Entry& y) { return runs_later(x, y); });
+    return true;
+  }
+  return false;
+}
+
+std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
+  std::vector<Entry>& front = front_;
+  const auto later = [this](const Entry& x, const Entry& y) { return runs_later(x, y); };
+  for (;;) {
+    if (front.empty()) {
+      if (!refill(key_of(not_after))) return std::nullopt;
+      continue;  // the front may still be empty if the bucket's least key was cancelled
+    }
+    if (time_of(last_) > not_after) return std::nullopt;
+    const std::uint32_t index = front.front().record;
+    std::pop_heap(front.begin(), front.end(), later);
+    front.pop_back();
+    const Record& r = records_[index];
+    if (r.state == State::cancelled) {
+      free_record(index);
+      --cancelled_;
+      continue;
+    }
+    const Popped p{Event{time_of(last_), r.kind, r.priority, r.entity, r.payload, {}}, r.timer};
+    free_record(index);
+    --live_;
+    return p;
+  }
+}
+
+void EventQueue::rebase(std::uint64_t key) {
+  std::vector<Entry> all = std::move(front_);
+  front_.clear();
+  for (std::vector<Entry>& bucket : buckets_) {
+    all.insert(all.end(), bucket.begin(), bucket.end());
+    bucket.clear();
+  }
+  occupied_.fill(0);
+  least_.fill(UINT64_MAX);
+  last_ = key;
+  for (const Entry& e : all)
+    insert(e);
+}
+
+void EventQueue::maybe_compact() {
+  // Amortised O(1): a pass costs O(entries) and happens only once cancelled entries are
+  // the majority.
+  if (cancelled_ < 64 || cancelled_ <= live_) return;
+  drop_cancelled(front_);
+  std::make_heap(front_.begin(), front_.end(),
+                 [this](const Entry& x, const Entry& y) { return runs_later(x, y); });
+  for (int b = 0; b < kBuckets; ++b) {
+    drop_cancelled(buckets_[b]);
+    if (buckets_[b].empty()) {
+      unmark(b);
+      least_[b] = UINT64_MAX;
+    }
+  }
 }
 
 }  // namespace covsim

@@ -6,15 +6,21 @@
 // therefore do not depend on which component happened to schedule first, as long as
 // models give such events distinct classes or entities.
 //
-// Layout, for speed: a 4-ary min-heap of 16-byte entries (time, record index), and one
-// record per scheduled event holding the rest. A record never changes while its heap
-// entry exists, so same-time comparisons always see the same key; it is freed when its
-// entry leaves the heap. pop() leaves the root as a hole that the next push() fills with
-// a single sift-down (the replace-top of a hold step). Cancellation is lazy: a cancelled
-// entry is skipped when it surfaces, and the heap is compacted when such entries
-// outnumber live ones.
+// Layout, for speed: a radix heap (Ahuja, Mehlhorn, Orlin and Tarjan) over the times,
+// which never run backwards in a simulation, with 4-bit digits. An entry (time, record
+// index) sits in the bucket named by the highest digit in which its time differs from the
+// time last popped and by its own value of that digit; the front bucket holds the entries
+// at exactly that time, as a small heap on the rest of the key. A push is an append; a
+// pop takes the front's top, or first moves the lowest non-empty bucket down around its
+// smallest time. An entry moves at most once per digit (16 times), in practice a few: far
+// cheaper than a comparison heap, and sequential in memory. The rest of an event lives in
+// a record that never changes while its entry exists. Cancellation is lazy: a cancelled
+// entry is dropped when its bucket is next moved or it reaches the top, and everything is
+// compacted when such entries outnumber live ones.
+#include <algorithm>
+#include <array>
+#include <bit>
 #include <cstdint>
-#include <new>
 #include <optional>
 #include <vector>
 
@@ -26,6 +32,7 @@ class EventQueue {
  public:
   static constexpr std::uint32_t kNoTimer = UINT32_MAX;
 
+  EventQueue() { least_.fill(UINT64_MAX); }
   // `timer` is an index the kernel uses to recognise a timer's firing; kNoTimer otherwise.
   EventHandle push(SimTime t, EventKind kind, EntityId entity, Priority priority,
                    std::uint64_t payload, std::uint32_t timer = kNoTimer);
@@ -47,12 +54,12 @@ class EventQueue {
 
  private:
   struct Entry {
-    std::int64_t time;
+    std::uint64_t key;  // the time, its sign bit flipped so that keys order as unsigned
     std::uint32_t record;
   };
   static_assert(sizeof(Entry) == 16);
   enum class State : std::uint8_t { free, scheduled, cancelled };
-  // 32 bytes: two records to a cache line. The time lives in the heap entry.
+  // 32 bytes: two records to a cache line.
   struct Record {
     std::uint64_t seq = 0;
     std::uint64_t payload = 0;
@@ -64,46 +71,58 @@ class EventQueue {
     State state = State::free;
   };
   static_assert(sizeof(Record) == 32);
-  // Heap storage aligned to a cache line, with the root at index kRoot, so that the four
-  // children of every node (kArity * i + 1 .. + 4, shifted by kRoot) share one 64-byte line.
-  static constexpr std::size_t kRoot = 3;
-  template <class T>
-  struct LineAligned {
-    using value_type = T;
-    LineAligned() = default;
-    template <class U>
-    LineAligned(const LineAligned<U>&) {}
-    T* allocate(std::size_t n) {
-      return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{64}));
-    }
-    void deallocate(T* p, std::size_t) { ::operator delete (p, std::align_val_t{64}); }
-    friend bool operator==(LineAligned, LineAligned) { return true; }
-  };
-  Entry& at(std::size_t i) { return heap_[i + kRoot]; }
-  const Entry& at(std::size_t i) const { return heap_[i + kRoot]; }
-  std::size_t heap_size() const { return heap_.size() - kRoot; }
+  static constexpr int kDigitBits = 4;
+  static constexpr int kDigits = 1 << kDigitBits;
+  static constexpr int kBuckets = 64 / kDigitBits * kDigits;  // (digit position, value)
+  static constexpr int kWords = kBuckets / 64;
 
-  bool before(const Entry& a, const Entry& b) const {
-    if (a.time != b.time) [[likely]]
-      return a.time < b.time;
-    return tie_before(a, b);
+  static std::uint64_t key_of(SimTime t) {
+    return static_cast<std::uint64_t>(t.ns()) ^ (std::uint64_t{1} << 63);
   }
-  bool tie_before(const Entry& a, const Entry& b) const;
+  static SimTime time_of(std::uint64_t key) {
+    return SimTime::from_ns(static_cast<std::int64_t>(key ^ (std::uint64_t{1} << 63)));
+  }
+  // Buckets in increasing index hold increasing keys, all above last_.
+  int bucket_of(std::uint64_t key) const {
+    const int position = (63 - std::countl_zero(key ^ last_)) / kDigitBits;
+    const auto digit = static_cast<int>((key >> (position * kDigitBits)) & (kDigits - 1));
+    return position * kDigits + digit;
+  }
+  void mark(int b) { occupied_[b / 64] |= std::uint64_t{1} << (b % 64); }
+  void put(int b, const Entry& e) {
+    buckets_[b].push_back(e);
+    least_[b] = std::min(least_[b], e.key);
+    mark(b);
+  }
+  void unmark(int b) { occupied_[b / 64] &= ~(std::uint64_t{1} << (b % 64)); }
+  int lowest_occupied() const;  // -1 if none
+  // Orders the front, whose entries share one time; std heap functions keep the greatest
+  // on top, so "greater" means "runs later".
+  bool runs_later(const Entry& a, const Entry& b) const;
   const Record* scheduled(EventHandle h) const;
   void free_record(std::uint32_t index);
-  void fill_hole();
-  void drop_cancelled_top();
-  void sift_up(std::size_t i, Entry e);
-  void sift_down(std::size_t i, Entry e);
+  void insert(const Entry& e);
+  // Moves the lowest non-empty bucket down around its smallest key if that key is at most
+  // `limit`; false if there is none.
+  bool refill(std::uint64_t limit);
+  // Re-buckets every entry around a new, smaller last key (only a push before the time
+  // last popped needs it; the kernel never does that).
+  void rebase(std::uint64_t key);
+  void drop_cancelled(std::vector<Entry>& bucket);
   void maybe_compact();
 
-  std::vector<Entry, LineAligned<Entry>> heap_ = decltype(heap_)(kRoot);  // kRoot unused entries
+  std::vector<Entry> front_;  // entries at the time last popped
+  std::array<std::vector<Entry>, kBuckets> buckets_;
+  std::array<std::uint64_t, kWords> occupied_{};  // bit b set when bucket b holds entries
+  // The smallest key put into each bucket since it was last emptied: its entries' minimum
+  // unless that entry was cancelled, and a valid base for moving the bucket down in any case.
+  std::array<std::uint64_t, kBuckets> least_;
+  std::uint64_t last_ = 0;  // the key of the time last popped
   std::vector<Record> records_;
   std::vector<std::uint32_t> free_records_;
-  bool hole_at_root_ = false;
   std::uint64_t next_seq_ = 0;
   std::size_t live_ = 0;
-  std::size_t cancelled_ = 0;  // cancelled entries still in the heap
+  std::size_t cancelled_ = 0;  // cancelled entries still in buckets
 };
 
 }  // namespace covsim

@@ -86,21 +86,24 @@ TEST_CASE("a rescheduled event orders after equal keys scheduled before it", "[e
   CHECK(ev->payload == 2);
 }
 
-TEST_CASE("the queue agrees with a reference ordered map under random operations",
-          "[event_queue]") {
-  // Reference: an ordered map from the full key (time, priority, entity, sequence) to the
-  // payload. The sequence is mirrored by counting pushes and reschedules.
+namespace {
+// Random pushes, cancels, reschedules and pops, checked against an ordered map from the full
+// key (time, priority, entity, sequence) to the payload; the sequence is mirrored by
+// counting pushes and reschedules. `delay(rng)` draws how far after the last pop an event
+// is scheduled; `start` is the time of the first pop's floor.
+template <class Delay>
+void check_against_reference(std::int64_t start, Delay delay) {
   using Key = std::tuple<std::int64_t, int, std::uint32_t, std::uint64_t>;
   std::map<Key, std::uint64_t> ref;
   std::map<std::uint64_t, std::pair<EventHandle, Key>> live;  // payload -> handle, key
   EventQueue q;
   RandomStream rng(7, 0, "queue-test");
   std::uint64_t seq = 0, next_payload = 0;
-  std::int64_t now = 0;
+  std::int64_t now = start;
   for (int step = 0; step < 200000; ++step) {
     const std::uint64_t op = rng.below(10);
     if (op < 4 || live.empty()) {
-      const std::int64_t t = now + static_cast<std::int64_t>(rng.below(50));
+      const std::int64_t t = now + delay(rng);
       const auto prio = static_cast<Priority>(rng.below(3));
       const auto entity = static_cast<EntityId>(rng.below(4));
       const std::uint64_t payload = next_payload++;
@@ -115,7 +118,7 @@ TEST_CASE("the queue agrees with a reference ordered map under random operations
       live.erase(it);
     } else if (op < 7) {
       auto it = std::next(live.begin(), static_cast<long>(rng.below(live.size())));
-      const std::int64_t t = now + static_cast<std::int64_t>(rng.below(50));
+      const std::int64_t t = now + delay(rng);
       const auto moved = q.reschedule(it->second.first, ns(t));
       REQUIRE(moved);
       it->second.first = *moved;
@@ -143,6 +146,41 @@ TEST_CASE("the queue agrees with a reference ordered map under random operations
     ref.erase(ref.begin());
   }
   CHECK(ref.empty());
+}
+}  // namespace
+
+TEST_CASE("the queue agrees with a reference ordered map under random operations",
+          "[event_queue]") {
+  SECTION("close times, many ties") {
+    check_against_reference(
+        0, [](RandomStream& rng) { return static_cast<std::int64_t>(rng.below(50)); });
+  }
+  SECTION("delays spread over every digit of the time, from negative times") {
+    check_against_reference(-(std::int64_t{1} << 50), [](RandomStream& rng) {
+      const std::uint64_t bits = rng.below(52);
+      return static_cast<std::int64_t>(rng.below(std::uint64_t{1} << bits));
+    });
+  }
+}
+
+TEST_CASE("an event pushed before the time last popped, or popped with a limit, keeps order",
+          "[event_queue]") {
+  // The kernel never schedules into the past, but the queue stays ordered if asked to.
+  EventQueue q;
+  q.push(ns(100), 0, 0, 0, 100);
+  q.push(ns(1000), 0, 0, 0, 1000);
+  REQUIRE(q.pop()->event.payload == 100);
+  q.push(ns(50), 0, 0, 0, 50);
+  q.push(ns(5), 0, 0, 0, 5);
+  CHECK_FALSE(q.pop(ns(4)));
+  q.push(ns(3), 0, 0, 0, 3);
+  REQUIRE(q.pop(ns(4))->event.payload == 3);
+  CHECK_FALSE(q.pop(ns(4)));
+  CHECK(q.pop()->event.payload == 5);
+  CHECK(q.pop()->event.payload == 50);
+  CHECK(q.pop()->event.payload == 1000);
+  CHECK_FALSE(q.pop());
+  CHECK(q.empty());
 }
 
 TEST_CASE("mass cancellation compacts without losing live events", "[event_queue]") {
