@@ -1,10 +1,10 @@
 #include "analysis/run_files.hpp"
 
 #include <fmt/format.h>
+#include <zlib.h>
 
 #include <charconv>
-#include <fstream>
-#include <sstream>
+#include <string_view>
 
 #include "analysis/canvas.hpp"
 #include "analysis/result_fields.hpp"
@@ -17,17 +17,74 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The fields of each data line of a CSV file with the expected header.
+// A file's lines, decompressed if it is gzip (zlib reads any other file as it is).
+class LineReader {
+ public:
+  explicit LineReader(const fs::path& file) : file_(file), in_(gzopen(file.c_str(), "rb")) {
+    if (in_ == nullptr) throw ScenarioError(file.string() + ": cannot open");
+    gzbuffer(in_, 1 << 17);
+  }
+  LineReader(const LineReader&) = delete;
+  LineReader& operator=(const LineReader&) = delete;
+  ~LineReader() { gzclose(in_); }
+
+  // The next line without its '\n', as std::getline gives it; false at the end.
+  bool next(std::string& line) {
+    for (;;) {
+      const std::size_t nl = buffer_.find('\n', begin_);
+      if (nl != std::string::npos) {
+        line.assign(buffer_, begin_, nl - begin_);
+        begin_ = nl + 1;
+        return true;
+      }
+      if (end_) {
+        if (begin_ == buffer_.size()) return false;
+        line.assign(buffer_, begin_);
+        begin_ = buffer_.size();
+        return true;
+      }
+      fill();
+    }
+  }
+
+ private:
+  void fill() {
+    buffer_.erase(0, begin_);
+    begin_ = 0;
+    const std::size_t kept = buffer_.size();
+    constexpr unsigned kChunk = 1 << 16;
+    buffer_.resize(kept + kChunk);
+    const int n = gzread(in_, buffer_.data() + kept, kChunk);
+    int error = Z_OK;
+    std::string_view message = gzerror(in_, &error);
+    // A truncated or corrupt .gz is an error, not a shorter file. zlib's message starts with
+    // the file's name.
+    if (n < 0 || (error != Z_OK && error != Z_STREAM_END)) {
+      const std::string name = file_.string() + ": ";
+      if (message.starts_with(name)) message.remove_prefix(name.size());
+      throw ScenarioError(name + "cannot read: " + std::string(message));
+    }
+    buffer_.resize(kept + static_cast<std::size_t>(n));
+    end_ = n == 0;
+  }
+
+  fs::path file_;
+  gzFile in_;
+  std::string buffer_;
+  std::size_t begin_ = 0;
+  bool end_ = false;
+};
+
+// The fields of each data line of a CSV file (or gzipped CSV) with the expected header.
 template <class F>
 void read_csv(const fs::path& file, const std::string& header_prefix, std::size_t fields, F&& row) {
-  std::ifstream in(file);
-  if (!in) throw ScenarioError(file.string() + ": cannot open");
+  LineReader in(file);
   std::string line;
-  if (!std::getline(in, line) || line.rfind(header_prefix, 0) != 0)
+  if (!in.next(line) || line.rfind(header_prefix, 0) != 0)
     throw ScenarioError(
         fmt::format("{}:1: expected a header starting \"{}\"", file.string(), header_prefix));
   std::vector<double> v;
-  for (std::size_t n = 2; std::getline(in, line); ++n) {
+  for (std::size_t n = 2; in.next(line); ++n) {
     v.clear();
     const char* p = line.data();
     const char* end = p + line.size();
@@ -94,8 +151,10 @@ std::vector<RobotTrack> RunFiles::tracks() const {
 
 bool is_run_output(const std::string& name) {
   if (name.ends_with(".partial")) return true;
-  for (const char* f :
-       {"scenario.json", "final.json", "trajectory.csv", "metrics.csv", "replay.html"})
+  // Both trajectory names: a compressed run replaces an uncompressed one's file, and back.
+  for (std::string_view f : {std::string_view("scenario.json"), std::string_view("final.json"),
+                             trajectory_file_name(false), trajectory_file_name(true),
+                             std::string_view("metrics.csv"), std::string_view("replay.html")})
     if (name == f) return true;
   for (const char* stem : {"scene.", "cost."})
     for (FigureFormat format : {FigureFormat::svg, FigureFormat::pdf, FigureFormat::png})
@@ -117,7 +176,17 @@ RunFiles read_run_files(const fs::path& dir) {
     throw ScenarioError(final_file.string() + ": $.robots: expected as many robots as " +
                         scenario_file.string() + " has");
   }
-  const fs::path trajectory = dir / "trajectory.csv";
+  const fs::path plain = dir / trajectory_file_name(false);
+  const fs::path compressed = dir / trajectory_file_name(true);
+  std::error_code ec;
+  const bool has_compressed = fs::exists(compressed, ec);
+  // `covsim run` leaves one of them; with both, which one is the run's is unknown.
+  if (has_compressed && fs::exists(plain, ec)) {
+    throw ScenarioError(fmt::format("{}: holds both {} and {}; remove the one not of this run",
+                                    dir.string(), plain.filename().string(),
+                                    compressed.filename().string()));
+  }
+  const fs::path trajectory = has_compressed ? compressed : plain;
   read_csv(trajectory, "t,robot,x,y,vx,vy,tx,ty,rx,ry", 10, [&](const std::vector<double>& v) {
     if (!(v[1] >= 0 && v[1] < static_cast<double>(o.robots.size())))
       throw ScenarioError(trajectory.string() + ": robot index out of range");

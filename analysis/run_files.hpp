@@ -1,6 +1,7 @@
 #pragma once
 // A run's output folder read back: what `covsim run` wrote (scenario.json, final.json,
-// trajectory.csv, metrics.csv) is enough to redraw its figures and its replay.
+// trajectory.csv or trajectory.csv.gz, metrics.csv) is enough to redraw its figures and its
+// replay.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -10,13 +11,6 @@
 #include "analysis/run_recorder.hpp"
 
 namespace covsim {
-
-// One row of trajectory.csv.
-struct TrajectoryRow {
-  double t;
-  std::uint32_t robot;
-  Vec2 position, virtual_generator, virtual_target, real_target;
-};
 
 struct RunFiles {
   Scenario scenario;        // from scenario.json, with the original file's name as its source
@@ -32,12 +26,13 @@ struct RunFiles {
 nlohmann::json portable_scenario(const Scenario& scenario, const std::filesystem::path& dir);
 
 // Whether a file name in a run folder is what `covsim run` or `covsim plot` writes there
-// (scenario.json, final.json, trajectory.csv, metrics.csv, scene.* and cost.* figures,
-// replay.html, and their .partial files): a new run into the folder replaces these, and
-// keeps anything else.
+// (scenario.json, final.json, trajectory.csv or trajectory.csv.gz, metrics.csv, scene.* and
+// cost.* figures, replay.html, and their .partial files): a new run into the folder replaces
+// these, and keeps anything else.
 bool is_run_output(const std::string& name);
 
-// Throws ScenarioError naming the file (and line, for CSV) that is missing or malformed.
+// Throws ScenarioError naming the file (and line, for CSV) that is missing or malformed. The
+// trajectory is read from trajectory.csv or trajectory.csv.gz, whichever the folder holds.
 RunFiles read_run_files(const std::filesystem::path& dir);
 
 }  // namespace covsim

@@ -1,5 +1,6 @@
-// `covsim run SCENARIO [--seed N] [--set PATH=VALUE ...] [--out DIR]`: runs the scenario and
-// writes scenario.json, final.json, trajectory.csv, metrics.csv, scene and cost figures into
+// `covsim run SCENARIO [--seed N] [--set PATH=VALUE ...] [--out DIR] [--compress]`: runs the
+// scenario and writes scenario.json, final.json, trajectory.csv (trajectory.csv.gz with
+// --compress or "recording": {"compress": true}), metrics.csv, scene and cost figures into
 // DIR (default out/<scenario name>-<seed>), all of them only if the run succeeds.
 #include <fmt/format.h>
 
@@ -34,6 +35,7 @@ void add_run_command(CLI::App& app) {
     std::string out;
     std::string trace;
     std::string format = "svg";
+    bool compress = false;
     std::vector<std::string> plugins;
   };
   auto opts = std::make_shared<Options>();
@@ -46,6 +48,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--format", opts->format, "Figures (scene, cost) as svg, pdf or png")
       ->check(CLI::IsMember({"svg", "pdf", "png"}))
       ->capture_default_str();
+  cmd->add_flag("--compress", opts->compress,
+                "Write trajectory.csv.gz (gzip) instead of trajectory.csv, as "
+                "\"recording\": {\"compress\": true} does");
   add_plugin_option(cmd, opts->plugins);
   cmd->callback([opts] {
     load_plugins(opts->plugins);
@@ -83,7 +88,9 @@ void add_run_command(CLI::App& app) {
           trace_header_for(scenario, fs::path(opts->scenario.file).parent_path());
       trace = std::make_unique<TraceWriter>(opts->trace, header);
     }
-    RunRecorder recorder(work, scenario.robot_positions, scenario.recording.trajectory_period,
+    RecordingConfig recording = scenario.recording;
+    recording.compress = recording.compress || opts->compress;
+    RunRecorder recorder(work, scenario.robot_positions, recording,
                          track_tolerance(scenario.environment->diameter()));
     RunProgress progress(&recorder);  // a line on stderr during a long run, on a terminal
     const CoverageOutcome outcome = run_coverage(scenario, &progress, trace.get());
@@ -124,9 +131,10 @@ void add_run_command(CLI::App& app) {
           dir.string()));
     }
     fmt::print(
-        "wrote {0}/scenario.json, {0}/final.json, {0}/trajectory.csv, {0}/metrics.csv, "
-        "{0}/scene.{1}, {0}/cost.{1}\n",
-        dir.string(), extension(*parse_figure_format(opts->format)));
+        "wrote {0}/scenario.json, {0}/final.json, {0}/{2}, {0}/metrics.csv, {0}/scene.{1}, "
+        "{0}/cost.{1}\n",
+        dir.string(), extension(*parse_figure_format(opts->format)),
+        trajectory_file_name(recording.compress));
   });
 }
 

@@ -1,11 +1,13 @@
 #pragma once
-// What a run's folder records: "recording": {"trajectory_period": s}.
+// What a run's folder records: "recording": {"trajectory_period": s, "compress": b}.
 
 namespace covsim {
 
 struct RecordingConfig {
   // Seconds between a robot's rows in trajectory.csv; 0 writes every motion step.
   double trajectory_period = 0.0;
+  // Writes trajectory.csv.gz (gzip) instead of trajectory.csv.
+  bool compress = false;
 };
 
 }  // namespace covsim

@@ -78,7 +78,8 @@ nlohmann::ordered_json describe_scenario(const Scenario& s) {
                         {"virtual_tolerance", c.virtual_tolerance_in(env.diameter())},
                         {"max_time", seconds(c.max_time)}};
   out["metrics"] = {{"period", seconds(c.sample_period)}};
-  out["recording"] = {{"trajectory_period", s.recording.trajectory_period}};
+  out["recording"] = {{"trajectory_period", s.recording.trajectory_period},
+                      {"compress", s.recording.compress}};
   out["limits"] = {{"motion_steps", s.limits.motion_steps},
                    {"trajectory_rows", s.limits.trajectory_rows}};
   // Only a scenario with a network has one: without, robots know each other's state at once.

@@ -363,8 +363,9 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment, s.seed);
   read_coverage(root, s.coverage);
   if (auto r = root.find("recording")) {
-    r->only_keys({"trajectory_period"});
+    r->only_keys({"trajectory_period", "compress"});
     if (auto p = r->find("trajectory_period")) s.recording.trajectory_period = p->non_negative();
+    if (auto c = r->find("compress")) s.recording.compress = c->boolean();
   }
   check_limits(root, s);
   // Checks that need the environment (grids too fine for it) fail here, not at a run's start.

@@ -8,6 +8,7 @@ run folders, and planners and coverage laws written in Python. See docs/python.m
     sim.positions          # (n, 2) numpy array, metres
 """
 import csv
+import gzip
 import json
 import os
 import tempfile
@@ -128,8 +129,8 @@ def sweep(spec, jobs=1, out=None, keep_series=False):
 
 class Run:
     """A run folder read back (covsim run --out DIR): final (dict, as final.json), scenario
-    (dict), trajectory and metrics (dicts of numpy arrays by column, as in trajectory.csv and
-    metrics.csv; docs/outputs.md)."""
+    (dict), trajectory and metrics (dicts of numpy arrays by column, as in trajectory.csv (or
+    trajectory.csv.gz) and metrics.csv; docs/outputs.md)."""
 
     def __init__(self, final, scenario, trajectory, metrics):
         self.final = final
@@ -152,7 +153,8 @@ class Run:
 
 
 def _columns(path):
-    with open(path, newline="") as f:
+    opener = gzip.open if path.endswith(".gz") else open
+    with opener(path, "rt", newline="") as f:
         reader = csv.reader(f)
         header = next(reader)
         rows = [[float(v) for v in row] for row in reader]
@@ -164,12 +166,27 @@ def _columns(path):
     return out
 
 
+def _trajectory_file(folder):
+    """The trajectory file of a run folder: trajectory.csv, or trajectory.csv.gz when the run
+    was compressed (pandas.read_csv and numpy.loadtxt read either)."""
+    folder = os.fspath(folder)
+    plain = os.path.join(folder, "trajectory.csv")
+    compressed = plain + ".gz"
+    if os.path.exists(compressed):
+        if os.path.exists(plain):
+            raise ValueError(f"{folder}: holds both trajectory.csv and trajectory.csv.gz; "
+                             "remove the one not of this run")
+        return compressed
+    return plain
+
+
 def load_run(folder):
-    """Reads a run folder (final.json, scenario.json, trajectory.csv, metrics.csv)."""
+    """Reads a run folder (final.json, scenario.json, trajectory.csv or trajectory.csv.gz,
+    metrics.csv)."""
     folder = os.fspath(folder)
     with open(os.path.join(folder, "final.json")) as f:
         final = json.load(f)
     with open(os.path.join(folder, "scenario.json")) as f:
         scenario = json.load(f)
-    return Run(final, scenario, _columns(os.path.join(folder, "trajectory.csv")),
+    return Run(final, scenario, _columns(_trajectory_file(folder)),
                _columns(os.path.join(folder, "metrics.csv")))
