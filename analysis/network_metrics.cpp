@@ -1,22 +1,48 @@
 #include "analysis/network_metrics.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "robot/networked_view.hpp"
 
 namespace covsim {
 
-NetworkMetrics::NetworkMetrics(const Environment& env) {
-  const Box& b = env.bounds();
-  const int m = 64;
+NetworkMetrics::NetworkMetrics(const Environment& env)
+    : lattice_at_(lattice_side * lattice_side, -1), lattice_box_(env.bounds()) {
+  const Box& b = lattice_box_;
+  const int m = lattice_side;
   for (int j = 0; j < m; ++j) {
     for (int i = 0; i < m; ++i) {
       const Vec2 p = b.lo + Vec2{(i + 0.5) * b.size().x / m, (j + 0.5) * b.size().y / m};
-      if (env.contains(p)) lattice_.push_back(p);
+      if (!env.contains(p)) continue;
+      lattice_at_[static_cast<std::size_t>(j * m + i)] = static_cast<int>(lattice_.size());
+      lattice_.push_back(p);
     }
   }
   lattice_weight_ = lattice_.empty() ? 0.0 : env.area() / static_cast<double>(lattice_.size());
 }
+
+namespace {
+
+bool in_cell(const ConvexPolygon& cell, Vec2 p) {
+  bool in = cell.size() >= 3;
+  for (std::size_t e = 0; e < cell.size() && in; ++e)
+    in = cross(cell[(e + 1) % cell.size()] - cell[e], p - cell[e]) >= 0.0;
+  return in;
+}
+
+// The lattice columns (or rows) whose points may lie in [lo, hi], for points at
+// origin + (k + 0.5) * step: one more on each side than the exact range, so that rounding
+// never leaves out a point the cell test would take.
+std::pair<int, int> lattice_span(double lo, double hi, double origin, double step, int m) {
+  const double first = std::floor((lo - origin) / step - 0.5) - 1.0;
+  const double last = std::ceil((hi - origin) / step - 0.5) + 1.0;
+  if (!(first <= last)) return {0, m - 1};  // not finite: every column
+  return {static_cast<int>(std::clamp(first, 0.0, m - 1.0)),
+          static_cast<int>(std::clamp(last, -1.0, m - 1.0))};
+}
+
+}  // namespace
 
 NetworkSample NetworkMetrics::sample(const CoverageController& c) const {
   NetworkSample s;
@@ -28,13 +54,7 @@ NetworkSample NetworkMetrics::sample(const CoverageController& c) const {
     s.graph = complete_graph_metrics(n);
     return s;
   }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-  for (std::uint32_t a = 0; a < n; ++a) {
-    for (std::uint32_t b = a + 1; b < n; ++b) {
-      if (net->channel().in_reach(positions[a], positions[b])) edges.emplace_back(a, b);
-    }
-  }
-  s.graph = comm_graph_metrics(n, edges);
+  s.graph = comm_graph_metrics(n, communication_edges(net->channel(), positions));
   double sum = 0.0;
   std::size_t count = 0;
   // Entries past the staleness limit are as good as gone (loop 1 drops them before use).
@@ -53,16 +73,28 @@ NetworkSample NetworkMetrics::sample(const CoverageController& c) const {
   std::vector<ConvexPolygon> cells(n);
   for (std::uint32_t i = 0; i < n; ++i)
     own_cell_summary(c.integrator(), net->knowledge(i, Generators::virtual_generators), &cells[i]);
-  for (Vec2 p : lattice_) {
-    int owners = 0;
-    for (const ConvexPolygon& cell : cells) {
-      bool in = cell.size() >= 3;
-      for (std::size_t e = 0; e < cell.size() && in; ++e)
-        in = cross(cell[(e + 1) % cell.size()] - cell[e], p - cell[e]) >= 0.0;
-      owners += in ? 1 : 0;
+  // Owners per lattice point, each cell tested only on the points in its bounding box.
+  const int m = lattice_side;
+  const Vec2 step = lattice_box_.size() / m;
+  std::vector<int> owners(lattice_.size(), 0);
+  for (const ConvexPolygon& cell : cells) {
+    if (cell.size() < 3) continue;
+    Box box;
+    for (Vec2 v : cell)
+      box.add(v);
+    const auto [i0, i1] = lattice_span(box.lo.x, box.hi.x, lattice_box_.lo.x, step.x, m);
+    const auto [j0, j1] = lattice_span(box.lo.y, box.hi.y, lattice_box_.lo.y, step.y, m);
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
+        const int k = lattice_at_[static_cast<std::size_t>(j * m + i)];
+        if (k >= 0 && in_cell(cell, lattice_[static_cast<std::size_t>(k)]))
+          ++owners[static_cast<std::size_t>(k)];
+      }
     }
-    if (owners == 0) s.area_claimed_by_none += lattice_weight_;
-    if (owners > 1) s.area_claimed_by_several += lattice_weight_;
+  }
+  for (int claims : owners) {
+    if (claims == 0) s.area_claimed_by_none += lattice_weight_;
+    if (claims > 1) s.area_claimed_by_several += lattice_weight_;
   }
   return s;
 }

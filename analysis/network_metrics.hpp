@@ -21,10 +21,18 @@ class NetworkMetrics {
  public:
   // The lattice of points of Ω (64 × 64 over its bounding box) for the disagreement estimate.
   explicit NetworkMetrics(const Environment& env);
+  // Edges from a grid of the range's width (every pair with an unlimited range), the graph
+  // as comm_graph_metrics says, and each robot's cell tested only against the lattice
+  // points in its bounding box.
   NetworkSample sample(const CoverageController& c) const;
 
  private:
+  static constexpr int lattice_side = 64;
   std::vector<Vec2> lattice_;
+  // The index in lattice_ of the point at column i, row j (j * lattice_side + i), or -1
+  // when that point is outside Ω.
+  std::vector<int> lattice_at_;
+  Box lattice_box_;
   double lattice_weight_ = 0.0;
 };
 

@@ -1,0 +1,78 @@
+// Scale: the wall time per simulated second of a run of N robots at constant density (a
+// random-env scenario whose square grows as sqrt(N), about 6 robots per m², the paper's
+// controller with TangentBug, classic loop 1, two simulated seconds), centralized and
+// decentralized (range three robot spacings, broadcasts every 0.1 s). Beside it the floor
+// the centralized controller is judged against: one CGAL Delaunay triangulation of the same
+// N points per loop-2 tick (ten per simulated second). The counter `wall_per_sim_s` is the
+// figure to compare.
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "analysis/coverage_run.hpp"
+#include "scenarios/random_environment.hpp"
+#include "scenarios/scenario.hpp"
+
+namespace {
+
+constexpr double kSimulatedSeconds = 2.0;
+constexpr double kSpacing = 0.4;  // metres between robots at the scenarios' density
+
+nlohmann::ordered_json scale_json(std::size_t n) {
+  covsim::RandomEnvironmentSpec spec;
+  spec.robots = static_cast<std::uint32_t>(n);
+  spec.size = kSpacing * std::sqrt(static_cast<double>(n));
+  nlohmann::ordered_json json = covsim::random_environment(spec);
+  json["convergence"] = {{"max_time", kSimulatedSeconds}};
+  json.erase("recording");
+  return json;
+}
+
+covsim::Scenario parse(const nlohmann::ordered_json& json) {
+  return covsim::parse_scenario(nlohmann::json::parse(json.dump()), "scale", ".");
+}
+
+// Wall seconds per simulated second, from the simulated seconds one iteration stands for.
+void report(benchmark::State& state, double simulated_seconds_per_iteration) {
+  state.counters["wall_per_sim_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * simulated_seconds_per_iteration,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void run(benchmark::State& state, const covsim::Scenario& s) {
+  for (auto _ : state)
+    benchmark::DoNotOptimize(covsim::run_coverage(s).fingerprint);
+  report(state, kSimulatedSeconds);
+}
+
+void BM_ScaleRun(benchmark::State& state) {
+  run(state, parse(scale_json(static_cast<std::size_t>(state.range(0)))));
+}
+
+void BM_ScaleRunDecentralized(benchmark::State& state) {
+  nlohmann::ordered_json json = scale_json(static_cast<std::size_t>(state.range(0)));
+  json["network"] = {{"range", 3.0 * kSpacing}};
+  run(state, parse(json));
+}
+
+void BM_DelaunayPerTick(benchmark::State& state) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const covsim::Scenario s = parse(scale_json(static_cast<std::size_t>(state.range(0))));
+  std::vector<K::Point_2> points;
+  for (covsim::Vec2 p : s.robot_positions)
+    points.emplace_back(p.x, p.y);
+  const double ticks_per_second = 1.0 / s.coverage.loop2_period.seconds();
+  for (auto _ : state) {
+    CGAL::Delaunay_triangulation_2<K> dt(points.begin(), points.end());
+    benchmark::DoNotOptimize(dt.number_of_faces());
+  }
+  report(state, 1.0 / ticks_per_second);  // one triangulation per iteration
+}
+
+}  // namespace
+
+BENCHMARK(BM_ScaleRun)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScaleRunDecentralized)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DelaunayPerTick)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
