@@ -4,12 +4,9 @@
 
 namespace covsim {
 
-bool EventQueue::runs_later(const Entry& a, const Entry& b) const {
-  const Record& ra = records_[a.record];
-  const Record& rb = records_[b.record];
-  if (ra.priority != rb.priority) return ra.priority > rb.priority;
-  if (ra.entity != rb.entity) return ra.entity > rb.entity;
-  return ra.seq > rb.seq;
+void EventQueue::push_front(std::uint32_t record) {
+  front_.push_back(front_entry(record));
+  std::push_heap(front_.begin(), front_.end(), RunsLater{});
 }
 
 const EventQueue::Record* EventQueue::scheduled(EventHandle h) const {
@@ -20,9 +17,7 @@ const EventQueue::Record* EventQueue::scheduled(EventHandle h) const {
 
 void EventQueue::insert(const Entry& e) {
   if (e.key == last_) {
-    front_.push_back(e);
-    std::push_heap(front_.begin(), front_.end(),
-                   [this](const Entry& x, const Entry& y) { return runs_later(x, y); });
+    push_front(e.record);
     return;
   }
   put(bucket_of(e.key), e);
@@ -91,8 +86,9 @@ void EventQueue::free_record(std::uint32_t index) {
   free_records_.push_back(index);
 }
 
-void EventQueue::drop_cancelled(std::vector<Entry>& bucket) {
-  const auto cancelled = [this](const Entry& e) {
+template <class E>
+void EventQueue::drop_cancelled(std::vector<E>& bucket) {
+  const auto cancelled = [this](const E& e) {
     if (records_[e.record].state != State::cancelled) return false;
     free_record(e.record);
     --cancelled_;
@@ -119,8 +115,7 @@ bool EventQueue::refill(std::uint64_t limit) {
     least_[b] = UINT64_MAX;
     for (const Entry& e : bucket) {
       if (e.key == least) {
-        front_.push_back(e);
-        __builtin_prefetch(&records_[e.record]);
+        front_.push_back(front_entry(e.record));
       } else {
         const int to = bucket_of(e.key);
         put(to, e);
@@ -130,16 +125,14 @@ bool EventQueue::refill(std::uint64_t limit) {
       }
     }
     bucket.clear();
-    std::make_heap(front_.begin(), front_.end(),
-                   [this](const Entry& x, const Entry& y) { return runs_later(x, y); });
+    std::make_heap(front_.begin(), front_.end(), RunsLater{});
     return true;
   }
   return false;
 }
 
 std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
-  std::vector<Entry>& front = front_;
-  const auto later = [this](const Entry& x, const Entry& y) { return runs_later(x, y); };
+  std::vector<FrontEntry>& front = front_;
   for (;;) {
     if (front.empty()) {
       if (!refill(key_of(not_after))) return std::nullopt;
@@ -147,7 +140,7 @@ std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
     }
     if (time_of(last_) > not_after) return std::nullopt;
     const std::uint32_t index = front.front().record;
-    std::pop_heap(front.begin(), front.end(), later);
+    std::pop_heap(front.begin(), front.end(), RunsLater{});
     front.pop_back();
     const Record& r = records_[index];
     if (r.state == State::cancelled) {
@@ -163,7 +156,9 @@ std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
 }
 
 void EventQueue::rebase(std::uint64_t key) {
-  std::vector<Entry> all = std::move(front_);
+  std::vector<Entry> all;
+  for (const FrontEntry& f : front_)
+    all.push_back(Entry{last_, f.record});
   front_.clear();
   for (std::vector<Entry>& bucket : buckets_) {
     all.insert(all.end(), bucket.begin(), bucket.end());
@@ -181,8 +176,7 @@ void EventQueue::maybe_compact() {
   // the majority.
   if (cancelled_ < 64 || cancelled_ <= live_) return;
   drop_cancelled(front_);
-  std::make_heap(front_.begin(), front_.end(),
-                 [this](const Entry& x, const Entry& y) { return runs_later(x, y); });
+  std::make_heap(front_.begin(), front_.end(), RunsLater{});
   for (int b = 0; b < kBuckets; ++b) {
     drop_cancelled(buckets_[b]);
     if (buckets_[b].empty()) {

@@ -96,9 +96,24 @@ class EventQueue {
   }
   void unmark(int b) { occupied_[b / 64] &= ~(std::uint64_t{1} << (b % 64)); }
   int lowest_occupied() const;  // -1 if none
-  // Orders the front, whose entries share one time; std heap functions keep the greatest
-  // on top, so "greater" means "runs later".
-  bool runs_later(const Entry& a, const Entry& b) const;
+  // The front's entries share one time and carry the rest of the key, so that ordering
+  // them (often thousands: every robot's broadcast and deliveries at one instant) reads no
+  // record. std heap functions keep the greatest on top, so "greater" means "runs later".
+  struct FrontEntry {
+    std::uint64_t order;  // priority << 32 | entity
+    std::uint64_t seq;
+    std::uint32_t record;
+  };
+  struct RunsLater {
+    bool operator()(const FrontEntry& a, const FrontEntry& b) const {
+      return a.order != b.order ? a.order > b.order : a.seq > b.seq;
+    }
+  };
+  FrontEntry front_entry(std::uint32_t record) const {
+    const Record& r = records_[record];
+    return {(std::uint64_t{r.priority} << 32) | r.entity, r.seq, record};
+  }
+  void push_front(std::uint32_t record);
   const Record* scheduled(EventHandle h) const;
   void free_record(std::uint32_t index);
   void insert(const Entry& e);
@@ -108,10 +123,11 @@ class EventQueue {
   // Re-buckets every entry around a new, smaller last key (only a push before the time
   // last popped needs it; the kernel never does that).
   void rebase(std::uint64_t key);
-  void drop_cancelled(std::vector<Entry>& bucket);
+  template <class E>
+  void drop_cancelled(std::vector<E>& entries);
   void maybe_compact();
 
-  std::vector<Entry> front_;  // entries at the time last popped
+  std::vector<FrontEntry> front_;  // entries at the time last popped, as a heap
   std::array<std::vector<Entry>, kBuckets> buckets_;
   std::array<std::uint64_t, kWords> occupied_{};  // bit b set when bucket b holds entries
   // The smallest key put into each bucket since it was last emptied: its entries' minimum

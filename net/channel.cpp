@@ -1,5 +1,7 @@
 #include "net/channel.hpp"
 
+#include <algorithm>
+
 #include "net/constant_delay.hpp"
 #include "net/no_loss.hpp"
 
@@ -17,15 +19,19 @@ Channel::Channel(ChannelConfig config, std::uint64_t seed, const Environment& en
 }
 
 Channel::Link& Channel::link(std::uint32_t sender, std::uint32_t receiver) {
-  const std::uint64_t key = (static_cast<std::uint64_t>(sender) << 32) | receiver;
-  auto it = links_.find(key);
-  if (it == links_.end()) {
-    it = links_
-             .emplace(key, Link{RandomStream(seed_, key, "link-loss"),
-                                RandomStream(seed_, key, "link-delay"), LinkState{}})
-             .first;
+  if (sender >= outgoing_.size()) outgoing_.resize(sender + 1);
+  Outgoing& out = outgoing_[sender];
+  const auto it = std::lower_bound(out.receivers.begin(), out.receivers.end(), receiver);
+  const auto at = it - out.receivers.begin();
+  if (it == out.receivers.end() || *it != receiver) {
+    // The streams are keyed by the directed link, whatever the order links are first used.
+    const std::uint64_t key = (static_cast<std::uint64_t>(sender) << 32) | receiver;
+    out.receivers.insert(it, receiver);
+    out.links.insert(out.links.begin() + at,
+                     Link{RandomStream(seed_, key, "link-loss"),
+                          RandomStream(seed_, key, "link-delay"), LinkState{}});
   }
-  return it->second;
+  return out.links[static_cast<std::size_t>(at)];
 }
 
 bool Channel::in_reach(Vec2 from, Vec2 to) const {

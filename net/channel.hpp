@@ -6,9 +6,9 @@
 // (loss_registry(), delay_registry()); each directed link keeps its own state for models
 // with memory.
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/geometry/environment.hpp"
 #include "core/sim_time.hpp"
@@ -18,8 +18,8 @@
 namespace covsim {
 
 struct ChannelConfig {
-  std::optional<double> range;  // unlimited when unset
-  bool line_of_sight = false;   // walls block: the straight link must lie in Ω
+  std::optional<double> range;              // unlimited when unset
+  bool line_of_sight = false;               // walls block: the straight link must lie in Ω
   std::shared_ptr<const LossModel> loss;    // unset: no loss
   std::shared_ptr<const DelayModel> delay;  // unset: no delay
   // The default channel (unlimited, lossless, instantaneous) is equivalent to every robot
@@ -52,7 +52,13 @@ class Channel {
   ChannelConfig config_;
   std::uint64_t seed_;
   const Environment& env_;
-  std::map<std::uint64_t, Link> links_;
+  // Each sender's links, created on first use, sorted by receiver: a sender reaches a few
+  // dozen robots, so a lookup is a short binary search in memory of its own.
+  struct Outgoing {
+    std::vector<std::uint32_t> receivers;
+    std::vector<Link> links;
+  };
+  std::vector<Outgoing> outgoing_;
 };
 
 }  // namespace covsim

@@ -1,10 +1,10 @@
 #pragma once
 // What a robot last heard from each other robot. Messages may arrive out of order: an
 // entry is replaced only by a newer sequence number. Entries whose information is older
-// than the staleness limit (by send time) are dropped.
+// than the staleness limit (by send time) are dropped. Entries are kept in a vector sorted
+// by sender: a robot hears a few dozen neighbours, and a delivery is a binary search.
 #include <cstdint>
-#include <map>
-#include <optional>
+#include <span>
 #include <vector>
 
 #include "net/message.hpp"
@@ -17,13 +17,16 @@ class NeighborTable {
   bool update(const StateMessage& m);
   // Drops entries sent before now - staleness.
   void drop_stale(SimTime now, SimTime staleness);
-  const std::map<std::uint32_t, StateMessage>& entries() const { return entries_; }
+  // By sender id, increasing.
+  std::span<const StateMessage> entries() const { return entries_; }
+  // The entry from that sender, or null.
+  const StateMessage* find(std::uint32_t sender) const;
   std::size_t size() const { return entries_.size(); }
   // The age of each entry's information at `now`, in seconds.
   std::vector<double> ages(SimTime now) const;
 
  private:
-  std::map<std::uint32_t, StateMessage> entries_;  // by sender, so iteration order is fixed
+  std::vector<StateMessage> entries_;
 };
 
 }  // namespace covsim

@@ -144,6 +144,7 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     r.path_length += distance(r.position, next);
     r.position = next;
     state_->move(Generators::positions, i, next);
+    view_->moved(i);
     r.status = s.status;
     r.stable = false;
     if (s.status == PlanStatus::projected && env_.contains(r.goal)) {

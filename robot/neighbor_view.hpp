@@ -27,6 +27,8 @@ class NeighborView {
   virtual bool ready(std::uint32_t i) = 0;
   // At robot i's loop 1, before it reads what it knows (drops stale entries).
   virtual void refresh(std::uint32_t i) = 0;
+  // Robot i's position has changed (after its motion step).
+  virtual void moved(std::uint32_t) {}
   // What robot i knows of the generators of that kind; valid until the view's next call.
   virtual Knowledge knowledge(std::uint32_t i, Generators kind) const = 0;
   virtual NetworkTotals totals() const { return {}; }

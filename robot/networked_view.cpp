@@ -1,5 +1,7 @@
 #include "robot/networked_view.hpp"
 
+#include <algorithm>
+
 #include "robot/event_classes.hpp"
 
 namespace covsim {
@@ -10,7 +12,9 @@ NetworkedView::NetworkedView(Kernel& kernel, const Environment& env, const Netwo
       config_(config),
       state_(state),
       channel_(std::make_unique<Channel>(config.channel, kernel.seed(), env)) {
-  const std::size_t n = state.points(Generators::positions).size();
+  const std::vector<Vec2>& positions = state.points(Generators::positions);
+  const std::size_t n = positions.size();
+  if (config.channel.range) receivers_.emplace(*config.channel.range, positions);
   tables_.resize(n);
   next_seq_.assign(n, 0);
   acquired_.assign(n, false);
@@ -46,6 +50,10 @@ bool NetworkedView::ready(std::uint32_t i) {
   return true;
 }
 
+void NetworkedView::moved(std::uint32_t i) {
+  if (receivers_) receivers_->moved(i, state_.points(Generators::positions)[i]);
+}
+
 void NetworkedView::refresh(std::uint32_t i) {
   if (config_.staleness) tables_[i].drop_stale(kernel_.now(), *config_.staleness);
 }
@@ -56,8 +64,8 @@ Knowledge NetworkedView::knowledge(std::uint32_t i, Generators kind) const {
   known_.clear();
   std::size_t self = 0;
   bool placed = false;
-  for (const auto& [sender, m] : tables_[i].entries()) {  // by sender id
-    if (!placed && sender > i) {
+  for (const StateMessage& m : tables_[i].entries()) {  // by sender id
+    if (!placed && m.sender > i) {
       self = known_.size();
       known_.push_back(own);
       placed = true;
@@ -75,26 +83,43 @@ void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {
   const std::vector<Vec2>& positions = state_.points(Generators::positions);
   const StateMessage m{i, next_seq_[i]++, k.now(), state_.points(Generators::virtual_generators)[i],
                        positions[i]};
-  for (std::uint32_t j = 0; j < tables_.size(); ++j) {
-    if (j == i) continue;
-    ++totals_.sent;
-    const Channel::Transmission t = channel_->transmit(i, j, positions[i], positions[j]);
-    if (t.outcome == Channel::Outcome::lost) ++totals_.lost;
-    if (t.outcome == Channel::Outcome::out_of_range || t.outcome == Channel::Outcome::blocked)
-      ++totals_.unreachable;
-    if (t.outcome != Channel::Outcome::delivered) continue;
-    ++totals_.delivered;
-    std::uint32_t slot;
-    if (!free_slots_.empty()) {
-      slot = free_slots_.back();
-      free_slots_.pop_back();
-      in_flight_[slot] = m;
-    } else {
-      slot = static_cast<std::uint32_t>(in_flight_.size());
-      in_flight_.push_back(m);
+  const auto n = static_cast<std::uint32_t>(tables_.size());
+  totals_.sent += n - 1;
+  // With a finite range only the robots near the sender can hear it; the others are out of
+  // range, and their links draw nothing, as if tested one by one.
+  if (receivers_) {
+    receivers_->candidates(positions[i], candidates_);
+    const auto others = static_cast<std::uint64_t>(
+        candidates_.size() - std::count(candidates_.begin(), candidates_.end(), i));
+    totals_.unreachable += (n - 1) - others;
+    for (std::uint32_t j : candidates_) {
+      if (j != i) transmit(k, m, i, j);
     }
-    k.schedule_in(t.delay, deliver_kind_, j, event_class::deliver, slot);
+  } else {
+    for (std::uint32_t j = 0; j < n; ++j) {
+      if (j != i) transmit(k, m, i, j);
+    }
   }
+}
+
+void NetworkedView::transmit(Kernel& k, const StateMessage& m, std::uint32_t i, std::uint32_t j) {
+  const std::vector<Vec2>& positions = state_.points(Generators::positions);
+  const Channel::Transmission t = channel_->transmit(i, j, positions[i], positions[j]);
+  if (t.outcome == Channel::Outcome::lost) ++totals_.lost;
+  if (t.outcome == Channel::Outcome::out_of_range || t.outcome == Channel::Outcome::blocked)
+    ++totals_.unreachable;
+  if (t.outcome != Channel::Outcome::delivered) return;
+  ++totals_.delivered;
+  std::uint32_t slot;
+  if (!free_slots_.empty()) {
+    slot = free_slots_.back();
+    free_slots_.pop_back();
+    in_flight_[slot] = m;
+  } else {
+    slot = static_cast<std::uint32_t>(in_flight_.size());
+    in_flight_.push_back(m);
+  }
+  k.schedule_in(t.delay, deliver_kind_, j, event_class::deliver, slot);
 }
 
 }  // namespace covsim

@@ -9,11 +9,13 @@
 // ready once NetworkConfig::acquire_time() has passed since the start and it has heard
 // somebody, or once acquire_deadline() has passed (it then goes alone, its cell Ω).
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/kernel.hpp"
 #include "net/channel.hpp"
 #include "net/neighbor_table.hpp"
+#include "net/receiver_grid.hpp"
 #include "robot/coverage_config.hpp"
 #include "robot/generator_state.hpp"
 #include "robot/neighbor_view.hpp"
@@ -28,6 +30,7 @@ class NetworkedView final : public NeighborView {
   void start(SimTime t0) override;
   bool ready(std::uint32_t i) override;
   void refresh(std::uint32_t i) override;
+  void moved(std::uint32_t i) override;
   Knowledge knowledge(std::uint32_t i, Generators kind) const override;
   NetworkTotals totals() const override { return totals_; }
 
@@ -37,11 +40,15 @@ class NetworkedView final : public NeighborView {
 
  private:
   void broadcast(Kernel& k, std::uint32_t i);
+  // One message on the link i -> j: the channel's verdict, counted, and its delivery.
+  void transmit(Kernel& k, const StateMessage& m, std::uint32_t i, std::uint32_t j);
 
   Kernel& kernel_;
   NetworkConfig config_;
   const GeneratorState& state_;
   std::unique_ptr<Channel> channel_;
+  std::optional<ReceiverGrid> receivers_;  // with a finite range only
+  std::vector<std::uint32_t> candidates_;
   EventKind broadcast_kind_ = 0, deliver_kind_ = 0;
   std::vector<NeighborTable> tables_;
   std::vector<std::uint64_t> next_seq_;

@@ -12,12 +12,7 @@
 namespace covsim {
 
 namespace {
-// The distinct points among the generators, and for each generator the index of its point,
-// its rank among the generators at that point (in index order) and how many share it.
-struct Coincidence {
-  std::vector<Vec2> distinct;
-  std::vector<std::size_t> point, rank, count;
-};
+using Coincidence = VoronoiPartition::Coincidence;
 
 Coincidence coincidence(std::span<const Vec2> g) {
   const std::size_t n = g.size();
@@ -69,24 +64,24 @@ void cell_of(const CellIntegrator& integrator, const Coincidence& c, const Delau
 
 VoronoiPartition::VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
                                    Coincident coincident)
-    : generators_(std::move(generators)) {
-  const std::size_t n = generators_.size();
-  const Coincidence c = coincidence(generators_);
-  // Rejecting, the triangulation of all the generators names any coincident pair.
-  const DelaunayNeighbors nb =
-      delaunay_neighbors(coincident == Coincident::reject ? generators_ : c.distinct);
-  start_.reserve(n + 1);
-  start_.push_back(0);
-  moments_.reserve(n);
-  vertices_.reserve(6 * n);
-  std::vector<Vec2> neighbors;
-  ConvexPolygon cell;
-  for (std::size_t i = 0; i < n; ++i) {
-    cell_of(integrator, c, nb, i, neighbors, cell);
-    vertices_.insert(vertices_.end(), cell.begin(), cell.end());
-    start_.push_back(vertices_.size());
-    moments_.push_back(integrator.integrate(cell, generators_[i]));
+    : integrator_(integrator),
+      generators_(std::move(generators)),
+      coincidence_(coincidence(generators_)),
+      // Rejecting, the triangulation of all the generators names any coincident pair.
+      neighbors_(delaunay_neighbors(coincident == Coincident::reject ? generators_
+                                                                     : coincidence_.distinct)),
+      cells_(generators_.size()) {}
+
+const VoronoiPartition::Cell& VoronoiPartition::computed(std::size_t i) const {
+  Cell& c = cells_[i];
+  if (!c.done) {
+    std::vector<Vec2> neighbors;
+    cell_of(integrator_, coincidence_, neighbors_, i, neighbors, c.vertices);
+    c.moments = integrator_.integrate(c.vertices, generators_[i]);
+    c.done = true;
+    ++cells_computed_;
   }
+  return c;
 }
 
 void voronoi_cell(const CellIntegrator& integrator, std::span<const Vec2> generators,
@@ -105,7 +100,7 @@ double VoronoiPartition::cost(std::span<const Vec2> points) const {
   }
   double h = 0.0;
   for (std::size_t i = 0; i < size(); ++i)
-    h += 0.5 * shift_moments(moments_[i], generators_[i], points[i]).second;
+    h += 0.5 * shift_moments(moments(i), generators_[i], points[i]).second;
   return h;
 }
 

@@ -1,9 +1,16 @@
 #pragma once
 // The Voronoi partition of Ω by a set of generators, with each cell's moments of φ.
+//
+// The Delaunay triangulation is computed at construction; a cell is clipped and integrated
+// the first time it is asked for, and kept. A robot's loop 1 reads its own cell only, so a
+// tick in which a few robots update costs one triangulation and a few cells, not N. The
+// lazy state makes concurrent reads of one partition unsafe; every run owns its own.
+#include <cstdint>
 #include <span>
 #include <vector>
 
 #include "core/geometry/cell_integrator.hpp"
+#include "core/geometry/delaunay.hpp"
 
 namespace covsim {
 
@@ -20,23 +27,41 @@ class VoronoiPartition {
 
   std::size_t size() const { return generators_.size(); }
   const std::vector<Vec2>& generators() const { return generators_; }
-  // Cell i (clipped to the integrator's box, counter-clockwise; empty if it misses it).
-  std::span<const Vec2> cell(std::size_t i) const {
-    return {vertices_.data() + start_[i], vertices_.data() + start_[i + 1]};
-  }
+  // Cell i (clipped to the integrator's box, counter-clockwise; empty if it misses it). The
+  // span stays valid as long as the partition.
+  std::span<const Vec2> cell(std::size_t i) const { return computed(i).vertices; }
   // Moments of φ over cell i ∩ Ω about generator i.
-  const Moments& moments(std::size_t i) const { return moments_[i]; }
-  CellSummary summary(std::size_t i) const { return summarize(moments_[i], generators_[i]); }
+  const Moments& moments(std::size_t i) const { return computed(i).moments; }
+  CellSummary summary(std::size_t i) const { return summarize(moments(i), generators_[i]); }
   // H(P, V) = Σ_i ½ ∫_{V_i ∩ Ω} |x - p_i|² φ for points P on this partition (the paper's
   // Remark 1 compares such costs); cost(generators()) is the partition's own cost.
   double cost(std::span<const Vec2> points) const;
   double cost() const { return cost(generators_); }
+  // How many cells have been clipped so far (for tests and benchmarks of the laziness).
+  std::size_t cells_computed() const { return cells_computed_; }
+
+  // The distinct points among the generators, and for each generator the index of its
+  // point, its rank among the generators at that point (in index order) and how many share
+  // it.
+  struct Coincidence {
+    std::vector<Vec2> distinct;
+    std::vector<std::size_t> point, rank, count;
+  };
 
  private:
+  struct Cell {
+    bool done = false;
+    ConvexPolygon vertices;
+    Moments moments;
+  };
+  const Cell& computed(std::size_t i) const;
+
+  const CellIntegrator& integrator_;
   std::vector<Vec2> generators_;
-  std::vector<Vec2> vertices_;
-  std::vector<std::size_t> start_;
-  std::vector<Moments> moments_;
+  Coincidence coincidence_;
+  DelaunayNeighbors neighbors_;
+  mutable std::vector<Cell> cells_;
+  mutable std::size_t cells_computed_ = 0;
 };
 
 // The cell of generators[self] alone, as VoronoiPartition(..., split) gives it: what a robot

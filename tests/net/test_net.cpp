@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "net/bernoulli_loss.hpp"
 #include "net/channel.hpp"
@@ -12,6 +14,7 @@
 #include "net/lognormal_delay.hpp"
 #include "net/neighbor_table.hpp"
 #include "net/no_loss.hpp"
+#include "net/receiver_grid.hpp"
 #include "net/uniform_delay.hpp"
 
 using namespace covsim;
@@ -125,16 +128,22 @@ TEST_CASE("neighbour tables keep the newest and drop the stale", "[net]") {
   };
   CHECK(t.update(msg(1, 5, 1.0)));
   CHECK_FALSE(t.update(msg(1, 3, 0.5)));  // older, arriving late
-  CHECK(t.entries().at(1).seq == 5);
+  REQUIRE(t.find(1) != nullptr);
+  CHECK(t.find(1)->seq == 5);
   CHECK(t.update(msg(1, 6, 1.1)));
   CHECK(t.update(msg(2, 1, 0.2)));
+  CHECK(t.update(msg(0, 1, 0.9)));  // a lower sender id, heard later, still comes first
+  CHECK(t.entries().front().sender == 0);
   const std::vector<double> ages = t.ages(SimTime::from_seconds(1.5));
-  REQUIRE(ages.size() == 2);
-  CHECK(ages[0] == Approx(0.4));  // sender 1, sent at 1.1
-  CHECK(ages[1] == Approx(1.3));  // sender 2, sent at 0.2
+  REQUIRE(ages.size() == 3);
+  CHECK(ages[0] == Approx(0.6));  // sender 0, sent at 0.9
+  CHECK(ages[1] == Approx(0.4));  // sender 1, sent at 1.1
+  CHECK(ages[2] == Approx(1.3));  // sender 2, sent at 0.2
   t.drop_stale(SimTime::from_seconds(1.5), SimTime::from_seconds(1.0));
-  CHECK(t.size() == 1);
-  CHECK(t.entries().count(1) == 1);
+  CHECK(t.size() == 2);
+  CHECK(t.find(0) != nullptr);
+  CHECK(t.find(1) != nullptr);
+  CHECK(t.find(2) == nullptr);
 }
 
 TEST_CASE("communication graph measures on known graphs", "[net]") {
@@ -172,5 +181,33 @@ TEST_CASE("the complete graph's measures in closed form equal the general ones",
     CHECK(closed.diameter == general.diameter);
     CHECK(closed.average_degree == Approx(general.average_degree));
     CHECK(closed.algebraic_connectivity == Approx(general.algebraic_connectivity).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("the receiver grid finds every robot within range as robots move", "[net]") {
+  RandomStream rng(11, 0, "receiver-grid");
+  const double range = 1.5;
+  std::vector<Vec2> positions(400);
+  for (Vec2& p : positions)
+    p = Vec2{rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0)};
+  ReceiverGrid grid(range, positions);
+  std::vector<std::uint32_t> found;
+  for (int step = 0; step < 20000; ++step) {
+    const auto i = static_cast<std::uint32_t>(rng.below(positions.size()));
+    // Mostly motion steps, now and then a jump across the room.
+    const double reach = rng.below(20) == 0 ? 10.0 : 0.1;
+    positions[i] += Vec2{rng.uniform(-reach, reach), rng.uniform(-reach, reach)};
+    grid.moved(i, positions[i]);
+    const Vec2 p = rng.below(2) == 0 ? positions[rng.below(positions.size())]
+                                     : Vec2{rng.uniform(-12.0, 12.0), rng.uniform(-12.0, 12.0)};
+    grid.candidates(p, found);
+    REQUIRE(std::is_sorted(found.begin(), found.end()));
+    REQUIRE(std::adjacent_find(found.begin(), found.end()) == found.end());
+    for (std::uint32_t j = 0; j < positions.size(); ++j) {
+      if (distance(positions[j], p) <= range)
+        REQUIRE(std::binary_search(found.begin(), found.end(), j));
+    }
+    // A superset, but not the whole swarm: the grid is what makes a broadcast cheap.
+    REQUIRE(found.size() < positions.size() / 4);
   }
 }

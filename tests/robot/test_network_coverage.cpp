@@ -98,6 +98,9 @@ TEST_CASE("a short range and walls split the communication graph", "[network]") 
   } graphs;
   const CoverageOutcome out = run_coverage(shorter, &graphs);
   CHECK(out.network.unreachable > 0);
+  // Robots far from a sender are counted out of range without a test each, so check that
+  // every transmission still has exactly one fate.
+  CHECK(out.network.sent == out.network.delivered + out.network.lost + out.network.unreachable);
   CHECK(graphs.max_components > 1);  // robots spread into rooms lose sight of each other
   CHECK(graphs.max_age <= 1.0);      // nothing past the staleness limit counts
   CHECK(out.sim_time <= SimTime::from_seconds(200.0));

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/geometry/geometry_error.hpp"
@@ -210,5 +211,29 @@ TEST_CASE("coincident generators split their cell into wedges, in index order", 
     voronoi_cell(w.cells, g, i, own);
     const auto cell = three.cell(i);
     CHECK(std::vector<Vec2>(cell.begin(), cell.end()) == own);
+  }
+}
+
+TEST_CASE("a partition clips only the cells asked for, the same in any order", "[cells]") {
+  World w(square(0, 0, 10, 10), {square(4, 4, 6, 6)});
+  RandomStream rng(5, 0, "lazy-cells");
+  std::vector<Vec2> gens;
+  for (int i = 0; i < 200; ++i)
+    gens.push_back({rng.uniform(0, 10), rng.uniform(0, 10)});
+  const VoronoiPartition forward(w.cells, gens);
+  const VoronoiPartition backward(w.cells, gens);
+  CHECK(forward.cells_computed() == 0);
+  const CellSummary one = forward.summary(17);
+  CHECK(forward.cells_computed() == 1);
+  CHECK(forward.summary(17).centroid == one.centroid);  // kept, not clipped again
+  CHECK(forward.cells_computed() == 1);
+  for (std::size_t i = backward.size(); i-- > 0;)
+    (void)backward.cell(i);
+  CHECK(backward.cells_computed() == 200);
+  CHECK(forward.cost() == backward.cost());  // every cell, bit for bit
+  CHECK(forward.cells_computed() == 200);
+  for (std::size_t i = 0; i < gens.size(); ++i) {
+    const auto a = forward.cell(i), b = backward.cell(i);
+    REQUIRE(std::equal(a.begin(), a.end(), b.begin(), b.end()));
   }
 }
