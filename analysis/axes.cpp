@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace covsim {
 
@@ -15,47 +18,78 @@ double tick_step(double range, int ticks) {
   return 10 * p;
 }
 
+namespace {
+// Where v lies between lo (0) and hi (1), on a base-10 log scale if `log`.
+double fraction(double v, double lo, double hi, bool log) {
+  return log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo))
+             : (v - lo) / (hi - lo);
+}
+
+// [lo, hi] widened to whole decades; a range that is empty, not positive or not finite
+// becomes one decade.
+void decade_range(double& lo, double& hi) {
+  if (!(lo > 0) || !std::isfinite(lo)) lo = 1e-6;
+  if (!(hi > lo) || !std::isfinite(hi)) hi = 10 * lo;
+  lo = std::pow(10.0, std::floor(std::log10(lo)));
+  hi = std::pow(10.0, std::ceil(std::log10(hi)));
+  if (!(hi > lo)) hi = 10 * lo;
+}
+
+// [lo, hi] widened to whole steps of about `count` ticks; a range that is empty or not
+// finite becomes [lo, lo + 1] or [0, 1].
+void tick_range(double& lo, double& hi, int count) {
+  if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0, hi = 1;
+  if (!(hi > lo)) hi = lo + 1;
+  const double s = tick_step(hi - lo, count);
+  lo = std::floor(lo / s) * s;
+  hi = std::ceil(hi / s) * s;
+}
+}  // namespace
+
 Vec2 Axes::to_px(Vec2 d) const {
-  const double fx = (d.x - data.lo.x) / (data.hi.x - data.lo.x);
-  const double fy = log_y ? (std::log10(d.y) - std::log10(data.lo.y)) /
-                                (std::log10(data.hi.y) - std::log10(data.lo.y))
-                          : (d.y - data.lo.y) / (data.hi.y - data.lo.y);
+  const double fx = fraction(d.x, data.lo.x, data.hi.x, log_x);
+  const double fy = fraction(d.y, data.lo.y, data.hi.y, log_y);
   return {lo.x + fx * (hi.x - lo.x), hi.y - fy * (hi.y - lo.y)};
 }
 
-Axes chart_axes(Box data, Vec2 lo, Vec2 hi, bool log_y) {
-  if (!std::isfinite(data.lo.x) || !std::isfinite(data.hi.x)) data.lo.x = 0, data.hi.x = 1;
-  if (!(data.hi.x > data.lo.x)) data.hi.x = data.lo.x + 1;
-  if (log_y) {
-    if (!(data.lo.y > 0) || !std::isfinite(data.lo.y)) data.lo.y = 1e-6;
-    if (!(data.hi.y > data.lo.y) || !std::isfinite(data.hi.y)) data.hi.y = 10 * data.lo.y;
-    data.lo.y = std::pow(10.0, std::floor(std::log10(data.lo.y)));
-    data.hi.y = std::pow(10.0, std::ceil(std::log10(data.hi.y)));
-    if (!(data.hi.y > data.lo.y)) data.hi.y = 10 * data.lo.y;
-  } else {
-    if (!std::isfinite(data.lo.y) || !std::isfinite(data.hi.y)) data.lo.y = 0, data.hi.y = 1;
-    if (!(data.hi.y > data.lo.y)) data.hi.y = data.lo.y + 1;
-    const double ys = tick_step(data.hi.y - data.lo.y, 6);
-    data.lo.y = std::floor(data.lo.y / ys) * ys;
-    data.hi.y = std::ceil(data.hi.y / ys) * ys;
-  }
-  const double xs = tick_step(data.hi.x - data.lo.x, 8);
-  data.lo.x = std::floor(data.lo.x / xs) * xs;
-  data.hi.x = std::ceil(data.hi.x / xs) * xs;
-  return {data, lo, hi, log_y};
+Axes chart_axes(Box data, Vec2 lo, Vec2 hi, bool log_y, bool log_x) {
+  if (log_y)
+    decade_range(data.lo.y, data.hi.y);
+  else
+    tick_range(data.lo.y, data.hi.y, 6);
+  if (log_x)
+    decade_range(data.lo.x, data.hi.x);
+  else
+    tick_range(data.lo.x, data.hi.x, 8);
+  return {data, lo, hi, log_y, log_x};
 }
 
 Axes map_axes(Box data, Vec2 lo, Vec2 hi) {
   const double s = std::min((hi.x - lo.x) / data.size().x, (hi.y - lo.y) / data.size().y);
   const Vec2 half = 0.5 * Vec2{(hi.x - lo.x) / s, (hi.y - lo.y) / s};
   const Vec2 mid = 0.5 * (data.lo + data.hi);
-  return {Box{mid - half, mid + half}, lo, hi, false};
+  return {Box{mid - half, mid + half}, lo, hi, false, false};
 }
 
 namespace {
 std::string tick_label(double v, double step) {
   if (std::abs(v) < 1e-9 * step) v = 0.0;
   return fmt::format("{:g}", v);
+}
+
+// The ticks of one axis over [lo, hi] with their labels: every decade on a log scale, else
+// about `count` steps of 1, 2 or 5 times a power of ten.
+std::vector<std::pair<double, std::string>> axis_ticks(double lo, double hi, bool log, int count) {
+  std::vector<std::pair<double, std::string>> out;
+  if (log) {
+    for (double e = std::round(std::log10(lo)); e <= std::log10(hi) + 1e-9; ++e)
+      out.emplace_back(std::pow(10.0, e), fmt::format("1e{:g}", e));
+  } else {
+    const double s = tick_step(hi - lo, count);
+    for (double v = std::ceil(lo / s - 1e-9) * s; v <= hi + 1e-9 * s; v += s)
+      out.emplace_back(v, tick_label(v, s));
+  }
+  return out;
 }
 }  // namespace
 
@@ -64,22 +98,13 @@ void draw_axes(Canvas& c, const Axes& a, std::string_view x_label, std::string_v
   const Colour ink = Colour::hex(0x222222), light = Colour::hex(0xe4e4e4);
   const double font = 10, tick = 4;
   const Stroke grid_line{light, 0.6}, tick_line{ink, 0.8};
-  const double xs = tick_step(a.data.hi.x - a.data.lo.x, 8);
-  for (double x = std::ceil(a.data.lo.x / xs - 1e-9) * xs; x <= a.data.hi.x + 1e-9 * xs; x += xs) {
+  for (const auto& [x, label] : axis_ticks(a.data.lo.x, a.data.hi.x, a.log_x, 8)) {
     const double px = a.to_px({x, a.data.lo.y}).x;
     if (grid) c.line({px, a.lo.y}, {px, a.hi.y}, grid_line);
     c.line({px, a.hi.y}, {px, a.hi.y + tick}, tick_line);
-    c.text({px, a.hi.y + tick + font + 1}, tick_label(x, xs), font, ink, Align::centre);
+    c.text({px, a.hi.y + tick + font + 1}, label, font, ink, Align::centre);
   }
-  std::vector<std::pair<double, std::string>> yticks;
-  if (a.log_y) {
-    for (double e = std::round(std::log10(a.data.lo.y)); e <= std::log10(a.data.hi.y) + 1e-9; ++e)
-      yticks.emplace_back(std::pow(10.0, e), fmt::format("1e{:g}", e));
-  } else {
-    const double ys = tick_step(a.data.hi.y - a.data.lo.y, 6);
-    for (double y = std::ceil(a.data.lo.y / ys - 1e-9) * ys; y <= a.data.hi.y + 1e-9 * ys; y += ys)
-      yticks.emplace_back(y, tick_label(y, ys));
-  }
+  const auto yticks = axis_ticks(a.data.lo.y, a.data.hi.y, a.log_y, 6);
   double widest = 0;
   for (const auto& [y, label] : yticks) {
     const double py = a.to_px({a.data.lo.x, y}).y;

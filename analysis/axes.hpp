@@ -14,12 +14,14 @@ struct Axes {
   Box data;            // x and y ranges in data units
   Vec2 lo, hi;         // the picture rectangle: lo top-left, hi bottom-right
   bool log_y = false;  // y on a base-10 log scale (data.lo.y > 0)
+  bool log_x = false;  // x on a base-10 log scale (data.lo.x > 0)
   Vec2 to_px(Vec2 d) const;
   double px_per_unit() const { return (hi.x - lo.x) / (data.hi.x - data.lo.x); }
 };
 
-// Axes over `data` rounded out to ticks (unless `exact`), filling the picture rectangle.
-Axes chart_axes(Box data, Vec2 lo, Vec2 hi, bool log_y = false);
+// Axes over `data` rounded out to ticks (to decades on a log axis), filling the picture
+// rectangle.
+Axes chart_axes(Box data, Vec2 lo, Vec2 hi, bool log_y = false, bool log_x = false);
 // Axes for a map: x and y in the same scale, `data` centred in the picture rectangle.
 Axes map_axes(Box data, Vec2 lo, Vec2 hi);
 

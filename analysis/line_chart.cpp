@@ -17,9 +17,13 @@ std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
   // The legend goes under the chart, a row per series, so it never hides a line.
   const double legend_row = 16;
   const double total_h = h + 8 + legend_row * static_cast<double>(chart.series.size());
+  const auto visible = [&](double x, double y) {
+    return std::isfinite(x) && std::isfinite(y) && (!chart.log_y || y > 0) &&
+           (!chart.log_x || x > 0);
+  };
   Box data{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
   const auto take = [&](double x, double y) {
-    if (!std::isfinite(x) || !std::isfinite(y) || (chart.log_y && !(y > 0))) return;
+    if (!visible(x, y)) return;
     data.lo = {std::min(data.lo.x, x), std::min(data.lo.y, y)};
     data.hi = {std::max(data.hi.x, x), std::max(data.hi.y, y)};
   };
@@ -35,13 +39,10 @@ std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
   if (!chart.log_y && data.lo.y > 0) data.lo.y = 0;
   Canvas c(file, w, total_h);
   c.rectangle({0, 0}, {w, total_h}, Colour::hex(0xffffff));
-  const Axes a = chart_axes(data, {left, top}, {w - right, h - bottom}, chart.log_y);
+  const Axes a = chart_axes(data, {left, top}, {w - right, h - bottom}, chart.log_y, chart.log_x);
   const Colour ink = Colour::hex(0x222222);
   draw_axes(c, a, chart.x_label, chart.y_label, true);
   c.text({left, 22}, chart.title, 13, ink);
-  const auto visible = [&](double x, double y) {
-    return std::isfinite(x) && std::isfinite(y) && (!chart.log_y || y > 0);
-  };
   c.push_clip({{a.lo, {a.hi.x, a.lo.y}, a.hi, {a.lo.x, a.hi.y}}});
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const ChartSeries& s = chart.series[k];

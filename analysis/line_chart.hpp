@@ -27,6 +27,7 @@ struct LineChart {
   std::string title, x_label, y_label;
   std::vector<ChartSeries> series;
   bool log_y = false;
+  bool log_x = false;  // points with x <= 0 are not drawn on a log x axis
   // A vertical line marking an x (the convergence time, say), with its label.
   std::optional<std::pair<double, std::string>> marker;
 };

@@ -131,4 +131,48 @@ bad "--out: .*expected a .svg, .pdf or .png" chart bars t.csv --group planner --
 printf 'planner,law,x\nA,m,abc\n' > bad.csv
 bad "bad.csv:2: column \"x\": expected a number" chart bars bad.csv --group planner --series law --value x --out b.svg
 [ ! -e b.svg ] || fail "a failed chart left a file"
+# covsim chart lines: a line per series, points sorted by x, on log axes; empty and nan cells
+# skipped; the points drawn on standard output.
+printf 'law,n,time\nvoronoi,10000,2.5\nvoronoi,100,40\nlloyd,100,30\nvoronoi,1000,8\n' > l.csv
+printf 'lloyd,1000,12\nlloyd,5000,\n"a,b",nan,3\nlloyd,10000,0.9\n' >> l.csv
+lines() { "$covsim" chart lines l.csv --x n --y time --series law --log-x --log-y --title "time" "$@"; }
+points=$(lines --out lines.svg)
+[ "$points" = "$(printf 'law,n,time\n"voronoi",100,40\n"voronoi",1000,8\n"voronoi",10000,2.5\n"lloyd",100,30\n"lloyd",1000,12\n"lloyd",10000,0.9')" ] ||
+  fail "chart lines points: $points"
+check_svg lines.svg
+if command -v xmllint > /dev/null; then xmllint --noout lines.svg || fail "lines.svg: xmllint"; fi
+# SVG draws text as glyph outlines: the words are read from the PDF, drawn the same way.
+lines --out lines.pdf > /dev/null
+check_pdf lines.pdf
+"$py" - lines.pdf <<'PY' || fail "lines.pdf lacks a series label or a decade tick"
+import re, sys, zlib
+data = open(sys.argv[1], "rb").read()
+text = []
+for m in re.finditer(rb"stream\r?\n(.*?)\r?\nendstream", data, re.S):
+    try:
+        content = zlib.decompress(m.group(1))
+    except zlib.error:
+        continue
+    string = rb"\((?:[^()\\]|\\.)*\)"
+    for show in re.findall(rb"\[(?:" + string + rb"|[^\]])*\]\s*TJ|" + string + rb"\s*Tj", content):
+        text.append(b"".join(s[1:-1] for s in re.findall(string, show)).decode("latin-1"))
+for want in ["voronoi", "lloyd", "time", "n", "1e2", "1e3", "1e4", "1e-1", "1e0", "1e1"]:
+    assert want in text, (want, text)
+assert text.count("1e2") == 2, text  # on both axes
+PY
+lines --out lines.png > /dev/null
+[ "$(png_size lines.png)" = 1360x920 ] || fail "lines.png is $(png_size lines.png), not 1360x920"
+# No --series: one unnamed line; linear axes take zero and below.
+printf 'n,time\n2,1\n0,-1\n1,0\n' > one.csv
+points=$("$covsim" chart lines one.csv --x n --y time --out one.svg)
+[ "$points" = "$(printf 'series,n,time\n"",0,-1\n"",1,0\n"",2,1')" ] || fail "one line: $points"
+check_svg one.svg
+bad "--y: .*l.csv: no column \"t\" in law,n,time" chart lines l.csv --x n --y t --out l2.svg
+bad "--series: .*no column \"planner\"" chart lines l.csv --x n --y time --series planner --out l2.svg
+printf 'law,n,time\nv,100,1\nv,1e3x,2\n' > text.csv
+bad "text.csv:3: column \"n\": expected a number, found \"1e3x\"" chart lines text.csv --x n --y time --out l2.svg
+bad "one.csv:3: column \"n\": --log-x needs values above 0, found 0" chart lines one.csv --x n --y time --log-x --out l2.svg
+bad "one.csv:3: column \"time\": --log-y needs values above 0" chart lines one.csv --x n --y time --log-y --out l2.svg
+bad "--out: .*expected a .svg, .pdf or .png" chart lines l.csv --x n --y time --out l2.txt
+[ ! -e l2.svg ] || fail "a failed chart left a file"
 echo "figures ok"
