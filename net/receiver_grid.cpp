@@ -6,6 +6,12 @@
 namespace covsim {
 
 namespace {
+// A cell index; clamped so that an absurdly small range cannot overflow the conversion
+// (clamped cells only gather more candidates, which the distance test then drops).
+std::int64_t index_of(double v, double cell) {
+  return static_cast<std::int64_t>(std::clamp(std::floor(v / cell), -1e15, 1e15));
+}
+
 std::uint64_t pack(std::int64_t cx, std::int64_t cy) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(cx)) << 32) |
          static_cast<std::uint32_t>(cy);
@@ -23,8 +29,7 @@ ReceiverGrid::ReceiverGrid(double range, std::span<const Vec2> positions)
 }
 
 std::uint64_t ReceiverGrid::cell_key(Vec2 p) const {
-  return pack(static_cast<std::int64_t>(std::floor(p.x / cell_)),
-              static_cast<std::int64_t>(std::floor(p.y / cell_)));
+  return pack(index_of(p.x, cell_), index_of(p.y, cell_));
 }
 
 void ReceiverGrid::moved(std::uint32_t i, Vec2 p) {
@@ -42,8 +47,7 @@ void ReceiverGrid::moved(std::uint32_t i, Vec2 p) {
 
 void ReceiverGrid::candidates(Vec2 p, std::vector<std::uint32_t>& out) const {
   out.clear();
-  const auto cx = static_cast<std::int64_t>(std::floor(p.x / cell_));
-  const auto cy = static_cast<std::int64_t>(std::floor(p.y / cell_));
+  const std::int64_t cx = index_of(p.x, cell_), cy = index_of(p.y, cell_);
   // Anchors farther than range + slack cannot be in range; the margin covers rounding.
   const double reach = (range_ + slack_) * (1.0 + 1e-9);
   for (std::int64_t x = cx - 1; x <= cx + 1; ++x) {
