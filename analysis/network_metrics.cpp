@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/voronoi_partition.hpp"
 #include "robot/networked_view.hpp"
 
 namespace covsim {
@@ -71,8 +72,11 @@ NetworkSample NetworkMetrics::sample(const CoverageController& c) const {
   s.info_age_mean = count > 0 ? sum / static_cast<double>(count) : 0.0;
   // Each robot's own cell of its virtual generator, from its table as it is.
   std::vector<ConvexPolygon> cells(n);
-  for (std::uint32_t i = 0; i < n; ++i)
-    own_cell_summary(c.integrator(), net->knowledge(i, Generators::virtual_generators), &cells[i]);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    // The polygon only: its moments are not needed here.
+    const Knowledge k = net->knowledge(i, Generators::virtual_generators);
+    voronoi_cell(c.integrator(), k.points, k.self, cells[i]);
+  }
   // Owners per lattice point, each cell tested only on the points in its bounding box.
   const int m = lattice_side;
   const Vec2 step = lattice_box_.size() / m;

@@ -4,7 +4,6 @@
 // test of every pair, a search from every node, a dense eigensolver) for the ratio.
 #include <benchmark/benchmark.h>
 
-#include <Eigen/Eigenvalues>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/breadth_first_search.hpp>
 #include <boost/graph/connected_components.hpp>
@@ -60,16 +59,8 @@ covsim::CommGraphMetrics baseline_metrics(std::size_t n, const covsim::CommEdges
     m.diameter = std::max(m.diameter, *std::max_element(dist.begin(), dist.end()));
   }
   if (n >= 2) {
-    Eigen::MatrixXd laplacian =
-        Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    for (auto [a, b] : edges) {
-      laplacian(a, b) -= 1.0;
-      laplacian(b, a) -= 1.0;
-      laplacian(a, a) += 1.0;
-      laplacian(b, b) += 1.0;
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(laplacian, Eigen::EigenvaluesOnly);
-    m.algebraic_connectivity = m.components > 1 ? 0.0 : std::max(0.0, solver.eigenvalues()(1));
+    m.algebraic_connectivity =
+        m.components > 1 ? 0.0 : covsim::dense_algebraic_connectivity(n, edges);
   }
   return m;
 }

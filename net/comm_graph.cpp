@@ -122,21 +122,6 @@ std::size_t component_diameter(Search& search, const Adjacency& g,
   return lower;
 }
 
-// λ2 of the Laplacian of a connected graph from a dense symmetric eigensolver.
-double dense_algebraic_connectivity(std::size_t n, const CommEdges& edges) {
-  Eigen::MatrixXd laplacian =
-      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-  for (auto [a, b] : edges) {
-    laplacian(a, b) -= 1.0;
-    laplacian(b, a) -= 1.0;
-    laplacian(a, a) += 1.0;
-    laplacian(b, b) += 1.0;
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(laplacian, Eigen::EigenvaluesOnly);
-  // Eigenvalues come sorted ascending; the smallest is 0 (up to rounding).
-  return std::max(0.0, solver.eigenvalues()(1));
-}
-
 // λ2 of the Laplacian L of a connected graph, as 1 / the largest eigenvalue of L⁺ on the
 // vectors orthogonal to the constant one. L⁺x comes from the grounded Laplacian (L without
 // one node's row and column, positive definite for a connected graph), factorised once:
@@ -216,6 +201,20 @@ double sparse_algebraic_connectivity(const Adjacency& g, const CommEdges& edges)
 }
 
 }  // namespace
+
+double dense_algebraic_connectivity(std::size_t n, const CommEdges& edges) {
+  Eigen::MatrixXd laplacian =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  for (auto [a, b] : edges) {
+    laplacian(a, b) -= 1.0;
+    laplacian(b, a) -= 1.0;
+    laplacian(a, a) += 1.0;
+    laplacian(b, b) += 1.0;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(laplacian, Eigen::EigenvaluesOnly);
+  // Eigenvalues come sorted ascending; the smallest is 0 (up to rounding).
+  return std::max(0.0, solver.eigenvalues()(1));
+}
 
 CommGraphMetrics comm_graph_metrics(std::size_t n, const CommEdges& edges) {
   CommGraphMetrics m;

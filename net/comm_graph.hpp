@@ -43,6 +43,11 @@ inline constexpr double algebraic_connectivity_tolerance = 1e-10;
 // algebraic_connectivity_tolerance.
 CommGraphMetrics comm_graph_metrics(std::size_t n, const CommEdges& edges);
 
+// λ2 of the Laplacian of a connected graph on n ≥ 2 nodes from Eigen's dense symmetric
+// eigensolver, O(n³): what comm_graph_metrics uses up to dense_spectrum_limit nodes, and the
+// reference its sparse estimate is checked against.
+double dense_algebraic_connectivity(std::size_t n, const CommEdges& edges);
+
 // The same for the complete graph on n nodes (the ideal network: every robot hears every
 // other), in closed form: one component, diameter 1, degree n - 1, and algebraic
 // connectivity n (the Laplacian nI - J has eigenvalues 0 and n).

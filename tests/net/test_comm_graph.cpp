@@ -1,7 +1,5 @@
 #include <catch2/catch.hpp>
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -51,16 +49,7 @@ CommGraphMetrics brute_force_metrics(std::size_t n, const CommEdges& edges, bool
   }
   m.average_degree = 2.0 * static_cast<double>(edges.size()) / static_cast<double>(n);
   if (spectrum && n >= 2 && m.components == 1) {
-    Eigen::MatrixXd laplacian =
-        Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    for (auto [a, b] : edges) {
-      laplacian(a, b) -= 1.0;
-      laplacian(b, a) -= 1.0;
-      laplacian(a, a) += 1.0;
-      laplacian(b, b) += 1.0;
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(laplacian, Eigen::EigenvaluesOnly);
-    m.algebraic_connectivity = std::max(0.0, solver.eigenvalues()(1));
+    m.algebraic_connectivity = dense_algebraic_connectivity(n, edges);
   }
   return m;
 }
