@@ -1,12 +1,66 @@
 #include "core/event_queue.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 namespace covsim {
 
 void EventQueue::push_front(std::uint32_t record) {
-  front_.push_back(front_entry(record));
-  std::push_heap(front_.begin(), front_.end(), RunsLater{});
+  const FrontEntry e = front_entry(record);
+  if (batch_.empty() || runs_before(e, batch_least_)) batch_least_ = e;
+  batch_.push_back(e);
+}
+
+void EventQueue::absorb_batch() {
+  const std::size_t rest = run_.size() - run_next_;
+  if (batch_.size() * 8 < rest) {
+    // A few entries due before a long run's rest: the heap takes them, rather than
+    // re-merging the run for each.
+    for (const FrontEntry& e : batch_) {
+      heap_.push_back(e);
+      std::push_heap(heap_.begin(), heap_.end(), RunsLater{});
+    }
+  } else {
+    std::sort(batch_.begin(), batch_.end(), runs_before);
+    if (rest == 0) {
+      run_.swap(batch_);
+    } else {
+      merged_.clear();
+      std::merge(run_.begin() + static_cast<std::ptrdiff_t>(run_next_), run_.end(), batch_.begin(),
+                 batch_.end(), std::back_inserter(merged_), runs_before);
+      run_.swap(merged_);
+    }
+    run_next_ = 0;
+  }
+  batch_.clear();
+}
+
+std::uint32_t EventQueue::take_front() {
+  const bool from_run = run_next_ < run_.size();
+  if (!batch_.empty()) {
+    // The batch is due when its least entry precedes both the run's and the heap's next.
+    const bool due = (!from_run || runs_before(batch_least_, run_[run_next_])) &&
+                     (heap_.empty() || runs_before(batch_least_, heap_.front()));
+    if (due) absorb_batch();
+  }
+  const bool run_first =
+      run_next_ < run_.size() && (heap_.empty() || runs_before(run_[run_next_], heap_.front()));
+  if (run_first) return run_[run_next_++].record;
+  const std::uint32_t record = heap_.front().record;
+  std::pop_heap(heap_.begin(), heap_.end(), RunsLater{});
+  heap_.pop_back();
+  return record;
+}
+
+std::vector<EventQueue::FrontEntry> EventQueue::drain_front() {
+  std::vector<FrontEntry> all(run_.begin() + static_cast<std::ptrdiff_t>(run_next_), run_.end());
+  all.insert(all.end(), heap_.begin(), heap_.end());
+  all.insert(all.end(), batch_.begin(), batch_.end());
+  run_.clear();
+  run_next_ = 0;
+  heap_.clear();
+  batch_.clear();
+  return all;
 }
 
 const EventQueue::Record* EventQueue::scheduled(EventHandle h) const {
@@ -115,7 +169,7 @@ bool EventQueue::refill(std::uint64_t limit) {
     least_[b] = UINT64_MAX;
     for (const Entry& e : bucket) {
       if (e.key == least) {
-        front_.push_back(front_entry(e.record));
+        push_front(e.record);
       } else {
         const int to = bucket_of(e.key);
         put(to, e);
@@ -125,23 +179,19 @@ bool EventQueue::refill(std::uint64_t limit) {
       }
     }
     bucket.clear();
-    std::make_heap(front_.begin(), front_.end(), RunsLater{});
     return true;
   }
   return false;
 }
 
 std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
-  std::vector<FrontEntry>& front = front_;
   for (;;) {
-    if (front.empty()) {
+    if (front_empty()) {
       if (!refill(key_of(not_after))) return std::nullopt;
       continue;  // the front may still be empty if the bucket's least key was cancelled
     }
     if (time_of(last_) > not_after) return std::nullopt;
-    const std::uint32_t index = front.front().record;
-    std::pop_heap(front.begin(), front.end(), RunsLater{});
-    front.pop_back();
+    const std::uint32_t index = take_front();
     const Record& r = records_[index];
     if (r.state == State::cancelled) {
       free_record(index);
@@ -157,9 +207,8 @@ std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
 
 void EventQueue::rebase(std::uint64_t key) {
   std::vector<Entry> all;
-  for (const FrontEntry& f : front_)
+  for (const FrontEntry& f : drain_front())
     all.push_back(Entry{last_, f.record});
-  front_.clear();
   for (std::vector<Entry>& bucket : buckets_) {
     all.insert(all.end(), bucket.begin(), bucket.end());
     bucket.clear();
@@ -175,8 +224,12 @@ void EventQueue::maybe_compact() {
   // Amortised O(1): a pass costs O(entries) and happens only once cancelled entries are
   // the majority.
   if (cancelled_ < 64 || cancelled_ <= live_) return;
-  drop_cancelled(front_);
-  std::make_heap(front_.begin(), front_.end(), RunsLater{});
+  run_.erase(run_.begin(), run_.begin() + static_cast<std::ptrdiff_t>(run_next_));
+  run_next_ = 0;
+  drop_cancelled(run_);
+  drop_cancelled(heap_);
+  std::make_heap(heap_.begin(), heap_.end(), RunsLater{});
+  drop_cancelled(batch_);  // batch_least_ stays a lower bound
   for (int b = 0; b < kBuckets; ++b) {
     drop_cancelled(buckets_[b]);
     if (buckets_[b].empty()) {

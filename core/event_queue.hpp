@@ -9,9 +9,9 @@
 // Layout, for speed: a radix heap (Ahuja, Mehlhorn, Orlin and Tarjan) over the times,
 // which never run backwards in a simulation, with 4-bit digits. An entry (time, record
 // index) sits in the bucket named by the highest digit in which its time differs from the
-// time last popped and by its own value of that digit; the front bucket holds the entries
-// at exactly that time, as a small heap on the rest of the key. A push is an append; a
-// pop takes the front's top, or first moves the lowest non-empty bucket down around its
+// time last popped and by its own value of that digit; the front holds the entries at
+// exactly that time, ordered on the rest of the key (see below). A push is an append; a
+// pop takes the front's first, or first moves the lowest non-empty bucket down around its
 // smallest time. An entry moves at most once per digit (16 times), in practice a few: far
 // cheaper than a comparison heap, and sequential in memory. The rest of an event lives in
 // a record that never changes while its entry exists. Cancellation is lazy: a cancelled
@@ -98,22 +98,36 @@ class EventQueue {
   int lowest_occupied() const;  // -1 if none
   // The front's entries share one time and carry the rest of the key, so that ordering
   // them (often thousands: every robot's broadcast and deliveries at one instant) reads no
-  // record. std heap functions keep the greatest on top, so "greater" means "runs later".
+  // record. Entries reaching the front go to an unsorted batch whose least entry is kept;
+  // pops consume a sorted run and a small heap, and the batch joins them only once its least
+  // entry is due: sorted into the run (merged with its rest) when large, pushed onto the heap
+  // when small against the run. An instant's deliveries, pushed while its broadcasts run
+  // and all due after them, are thus sorted once and read in sequence instead of passing
+  // through a heap of tens of thousands.
   struct FrontEntry {
     std::uint64_t order;  // priority << 32 | entity
     std::uint64_t seq;
     std::uint32_t record;
   };
+  static bool runs_before(const FrontEntry& a, const FrontEntry& b) {
+    return a.order != b.order ? a.order < b.order : a.seq < b.seq;
+  }
+  // std heap functions keep the greatest on top, so "greater" means "runs later".
   struct RunsLater {
-    bool operator()(const FrontEntry& a, const FrontEntry& b) const {
-      return a.order != b.order ? a.order > b.order : a.seq > b.seq;
-    }
+    bool operator()(const FrontEntry& a, const FrontEntry& b) const { return runs_before(b, a); }
   };
   FrontEntry front_entry(std::uint32_t record) const {
     const Record& r = records_[record];
     return {(std::uint64_t{r.priority} << 32) | r.entity, r.seq, record};
   }
+  bool front_empty() const { return batch_.empty() && heap_.empty() && run_next_ == run_.size(); }
+  // Removes the front's first entry (the front must not be empty) and returns its record.
+  std::uint32_t take_front();
+  // Moves the batch into the run or the heap.
+  void absorb_batch();
   void push_front(std::uint32_t record);
+  // Every front entry, the front left empty.
+  std::vector<FrontEntry> drain_front();
   const Record* scheduled(EventHandle h) const;
   void free_record(std::uint32_t index);
   void insert(const Entry& e);
@@ -127,7 +141,13 @@ class EventQueue {
   void drop_cancelled(std::vector<E>& entries);
   void maybe_compact();
 
-  std::vector<FrontEntry> front_;  // entries at the time last popped, as a heap
+  // The front: entries at the time last popped.
+  std::vector<FrontEntry> batch_;  // not yet ordered
+  FrontEntry batch_least_{};       // a lower bound of the batch when it is not empty
+  std::vector<FrontEntry> run_;    // sorted; entries before run_next_ are consumed
+  std::size_t run_next_ = 0;
+  std::vector<FrontEntry> heap_;    // a heap (RunsLater)
+  std::vector<FrontEntry> merged_;  // scratch for merging the batch into the run
   std::array<std::vector<Entry>, kBuckets> buckets_;
   std::array<std::uint64_t, kWords> occupied_{};  // bit b set when bucket b holds entries
   // The smallest key put into each bucket since it was last emptied: its entries' minimum

@@ -22,8 +22,8 @@ NetworkedView::NetworkedView(Kernel& kernel, const Environment& env, const Netwo
       "broadcast", [this](Kernel& k, const Event& ev) { broadcast(k, ev.entity); });
   deliver_kind_ = kernel_.add_kind("deliver", [this](Kernel&, const Event& ev) {
     const auto slot = static_cast<std::uint32_t>(ev.payload);
-    tables_[ev.entity].update(in_flight_[slot]);
-    free_slots_.push_back(slot);
+    tables_[ev.entity].update(in_flight_[slot].message);
+    if (--in_flight_[slot].deliveries == 0) free_slots_.push_back(slot);
   });
 }
 
@@ -85,6 +85,7 @@ void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {
                        positions[i]};
   const auto n = static_cast<std::uint32_t>(tables_.size());
   totals_.sent += n - 1;
+  const std::uint32_t slot = new_slot(m);
   // With a finite range only the robots near the sender can hear it; the others are out of
   // range, and their links draw nothing, as if tested one by one.
   if (receivers_) {
@@ -93,16 +94,30 @@ void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {
         candidates_.size() - std::count(candidates_.begin(), candidates_.end(), i));
     totals_.unreachable += (n - 1) - others;
     for (std::uint32_t j : candidates_) {
-      if (j != i) transmit(k, m, i, j);
+      if (j != i) transmit(k, slot, i, j);
     }
   } else {
     for (std::uint32_t j = 0; j < n; ++j) {
-      if (j != i) transmit(k, m, i, j);
+      if (j != i) transmit(k, slot, i, j);
     }
   }
+  if (in_flight_[slot].deliveries == 0) free_slots_.push_back(slot);  // nothing delivered
 }
 
-void NetworkedView::transmit(Kernel& k, const StateMessage& m, std::uint32_t i, std::uint32_t j) {
+std::uint32_t NetworkedView::new_slot(const StateMessage& m) {
+  std::uint32_t slot;
+  if (!free_slots_.empty()) {
+    slot = free_slots_.back();
+    free_slots_.pop_back();
+  } else {
+    slot = static_cast<std::uint32_t>(in_flight_.size());
+    in_flight_.emplace_back();
+  }
+  in_flight_[slot] = {m, 0};
+  return slot;
+}
+
+void NetworkedView::transmit(Kernel& k, std::uint32_t slot, std::uint32_t i, std::uint32_t j) {
   const std::vector<Vec2>& positions = state_.points(Generators::positions);
   const Channel::Transmission t = channel_->transmit(i, j, positions[i], positions[j]);
   if (t.outcome == Channel::Outcome::lost) ++totals_.lost;
@@ -110,15 +125,7 @@ void NetworkedView::transmit(Kernel& k, const StateMessage& m, std::uint32_t i, 
     ++totals_.unreachable;
   if (t.outcome != Channel::Outcome::delivered) return;
   ++totals_.delivered;
-  std::uint32_t slot;
-  if (!free_slots_.empty()) {
-    slot = free_slots_.back();
-    free_slots_.pop_back();
-    in_flight_[slot] = m;
-  } else {
-    slot = static_cast<std::uint32_t>(in_flight_.size());
-    in_flight_.push_back(m);
-  }
+  ++in_flight_[slot].deliveries;
   k.schedule_in(t.delay, deliver_kind_, j, event_class::deliver, slot);
 }
 

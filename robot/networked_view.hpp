@@ -40,8 +40,10 @@ class NetworkedView final : public NeighborView {
 
  private:
   void broadcast(Kernel& k, std::uint32_t i);
-  // One message on the link i -> j: the channel's verdict, counted, and its delivery.
-  void transmit(Kernel& k, const StateMessage& m, std::uint32_t i, std::uint32_t j);
+  // The broadcast's message on the link i -> j: the channel's verdict, counted, and its
+  // delivery, which shares the broadcast's slot.
+  void transmit(Kernel& k, std::uint32_t slot, std::uint32_t i, std::uint32_t j);
+  std::uint32_t new_slot(const StateMessage& m);
 
   Kernel& kernel_;
   NetworkConfig config_;
@@ -52,7 +54,13 @@ class NetworkedView final : public NeighborView {
   EventKind broadcast_kind_ = 0, deliver_kind_ = 0;
   std::vector<NeighborTable> tables_;
   std::vector<std::uint64_t> next_seq_;
-  std::vector<StateMessage> in_flight_;  // messages on their way, by slot
+  // Messages on their way, one slot per broadcast however many deliveries it has pending
+  // (tens with a ranged network), freed by the last.
+  struct InFlight {
+    StateMessage message;
+    std::uint32_t deliveries = 0;
+  };
+  std::vector<InFlight> in_flight_;
   std::vector<std::uint32_t> free_slots_;
   std::vector<bool> acquired_;
   SimTime t0_;

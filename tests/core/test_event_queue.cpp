@@ -203,3 +203,56 @@ TEST_CASE("mass cancellation compacts without losing live events", "[event_queue
   }
   CHECK(count == 1000);
 }
+
+TEST_CASE("events pushed at the instant being run keep the total order", "[event_queue]") {
+  // As when broadcasts push deliveries while their instant runs: bursts of same-time pushes,
+  // some due after everything pending at that time and some before, a few cancelled, checked
+  // against an ordered set of (time, priority, entity, sequence).
+  using Key = std::tuple<std::int64_t, int, std::uint32_t, std::uint64_t>;
+  std::map<Key, EventHandle> ref;
+  EventQueue q;
+  RandomStream rng(11, 0, "queue-instant-test");
+  std::uint64_t seq = 0;
+  const auto push = [&](std::int64_t t, int lowest_priority) {
+    const auto prio =
+        static_cast<Priority>(lowest_priority + static_cast<int>(rng.below(7 - lowest_priority)));
+    const auto entity = static_cast<EntityId>(rng.below(1000));
+    const EventHandle h = q.push(ns(t), 0, entity, prio, seq);
+    ref.emplace(Key{t, prio, entity, seq++}, h);
+  };
+  for (int i = 0; i < 1000; ++i)
+    push(0, 0);
+  std::int64_t now = 0;
+  for (int step = 0; step < 100000 && !ref.empty(); ++step) {
+    auto popped = q.pop();
+    REQUIRE(popped);
+    const auto [t, prio, entity, s] = ref.begin()->first;
+    REQUIRE(popped->event.payload == s);
+    REQUIRE(popped->event.time.ns() == t);
+    ref.erase(ref.begin());
+    now = t;
+    const std::uint64_t kind = rng.below(100);
+    if (kind < 3) {  // a broadcast: many pushes at this instant, due after the popped one
+      const std::uint64_t n = rng.below(60);
+      for (std::uint64_t k = 0; k < n; ++k)
+        push(now, prio);
+    } else if (kind < 40) {  // one push, at any class: often due before the rest
+      push(now, 0);
+    } else if (kind < 45) {
+      push(now + 1 + static_cast<std::int64_t>(rng.below(3)), 0);
+      if (ref.size() < 200)
+        for (int k = 0; k < 400; ++k)
+          push(now + 1, 0);
+    } else if (kind < 48 && !ref.empty()) {
+      auto it = std::next(ref.begin(), static_cast<long>(rng.below(ref.size())));
+      REQUIRE(q.cancel(it->second));
+      ref.erase(it);
+    }
+    REQUIRE(q.size() == ref.size());
+  }
+  while (auto popped = q.pop()) {
+    REQUIRE(popped->event.payload == std::get<3>(ref.begin()->first));
+    ref.erase(ref.begin());
+  }
+  CHECK(ref.empty());
+}
