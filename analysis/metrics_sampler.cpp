@@ -1,6 +1,7 @@
 #include "analysis/metrics_sampler.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace covsim {
@@ -31,15 +32,17 @@ CommunicationSummary summarize_communication(const std::vector<MetricsSample>& s
   CommunicationSummary out;
   if (samples.empty()) return out;
   double connected = 0.0;
-  out.algebraic_connectivity_min = std::numeric_limits<double>::infinity();
+  // NaN unless some sample computed it.
+  out.algebraic_connectivity_min = std::numeric_limits<double>::quiet_NaN();
   for (const MetricsSample& s : samples) {
     out.info_age_mean += s.network.info_age_mean;
     out.info_age_max = std::max(out.info_age_max, s.network.info_age_max);
     out.area_claimed_by_none += s.network.area_claimed_by_none;
     out.area_claimed_by_several += s.network.area_claimed_by_several;
     connected += s.network.graph.components <= 1 ? 1.0 : 0.0;
-    out.algebraic_connectivity_min =
-        std::min(out.algebraic_connectivity_min, s.network.graph.algebraic_connectivity);
+    const double a = s.network.graph.algebraic_connectivity;
+    if (!std::isnan(a) && !(a >= out.algebraic_connectivity_min))
+      out.algebraic_connectivity_min = a;
   }
   const auto n = static_cast<double>(samples.size());
   out.info_age_mean /= n;

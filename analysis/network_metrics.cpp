@@ -55,7 +55,8 @@ NetworkSample NetworkMetrics::sample(const CoverageController& c) const {
     s.graph = complete_graph_metrics(n);
     return s;
   }
-  s.graph = comm_graph_metrics(n, communication_edges(net->channel(), positions));
+  s.graph = comm_graph_metrics(n, communication_edges(net->channel(), positions),
+                               n <= c.config().algebraic_connectivity_robots);
   double sum = 0.0;
   std::size_t count = 0;
   // Entries past the staleness limit are as good as gone (loop 1 drops them before use).

@@ -1,11 +1,18 @@
 #include "analysis/result_fields.hpp"
 
+#include <cmath>
+
 #include "core/fingerprint.hpp"
 
 namespace covsim {
 
 namespace {
 using json = nlohmann::ordered_json;
+
+// A value not computed (NaN) is null: an empty cell in CSV.
+json number_or_null(double v) {
+  return std::isnan(v) ? json(nullptr) : json(v);
+}
 
 json point(Vec2 p) {
   return json::array({p.x, p.y});
@@ -225,7 +232,7 @@ const FieldTable<MetricsSample>& metrics_fields() {
           [](const S& s) { return json(s.network.graph.average_degree); }),
       get("algebraic_connectivity", FieldKind::number, "",
           "second-smallest eigenvalue of the graph Laplacian",
-          [](const S& s) { return json(s.network.graph.algebraic_connectivity); }),
+          [](const S& s) { return number_or_null(s.network.graph.algebraic_connectivity); }),
   };
   return t;
 }
@@ -249,7 +256,7 @@ const FieldTable<RunMeasures>& run_fields() {
                     FieldKind::number,
                     std::move(unit),
                     std::move(description),
-                    [m](const M& r) { return json(r.communication.*m); },
+                    [m](const M& r) { return number_or_null(r.communication.*m); },
                     nullptr,
                     true};
   };

@@ -216,7 +216,7 @@ double dense_algebraic_connectivity(std::size_t n, const CommEdges& edges) {
   return std::max(0.0, solver.eigenvalues()(1));
 }
 
-CommGraphMetrics comm_graph_metrics(std::size_t n, const CommEdges& edges) {
+CommGraphMetrics comm_graph_metrics(std::size_t n, const CommEdges& edges, bool spectrum) {
   CommGraphMetrics m;
   if (n == 0) return m;
   const Adjacency g(n, edges);
@@ -238,7 +238,9 @@ CommGraphMetrics comm_graph_metrics(std::size_t n, const CommEdges& edges) {
       m.diameter = std::max(m.diameter, component_diameter(search, g, members));
   }
 
-  if (n >= 2 && m.components == 1) {
+  if (n >= 2 && m.components == 1 && !spectrum) {
+    m.algebraic_connectivity = std::numeric_limits<double>::quiet_NaN();
+  } else if (n >= 2 && m.components == 1) {
     m.algebraic_connectivity = n <= dense_spectrum_limit ? dense_algebraic_connectivity(n, edges)
                                                          : sparse_algebraic_connectivity(g, edges);
   }

@@ -21,7 +21,8 @@ struct CommGraphMetrics {
   // over its components.
   std::size_t diameter = 0;
   double average_degree = 0.0;
-  // The second-smallest eigenvalue of the graph Laplacian: 0 exactly when disconnected.
+  // The second-smallest eigenvalue of the graph Laplacian: 0 exactly when disconnected;
+  // NaN when not computed (comm_graph_metrics told not to).
   double algebraic_connectivity = 0.0;
 };
 
@@ -41,7 +42,9 @@ inline constexpr double algebraic_connectivity_tolerance = 1e-10;
 // a sparse LDLᵀ factorisation of the grounded Laplacian (fill-reducing order, about
 // O(n^1.5) for planar-like graphs) and a few tens of Lanczos steps on its inverse, within
 // algebraic_connectivity_tolerance.
-CommGraphMetrics comm_graph_metrics(std::size_t n, const CommEdges& edges);
+// Without `spectrum` a connected graph's algebraic connectivity is left NaN, and a sample
+// costs O(n + edges) on graphs of bounded diameter.
+CommGraphMetrics comm_graph_metrics(std::size_t n, const CommEdges& edges, bool spectrum = true);
 
 // λ2 of the Laplacian of a connected graph on n ≥ 2 nodes from Eigen's dense symmetric
 // eigensolver, O(n³): what comm_graph_metrics uses up to dense_spectrum_limit nodes, and the

@@ -58,6 +58,10 @@ struct CoverageConfig {
   }
   SimTime max_time = SimTime::from_ns(600'000'000'000);   // 600 s
   SimTime sample_period = SimTime::from_ns(500'000'000);  // metrics every 0.5 s
+  // The most robots whose communication graph gets its algebraic connectivity at each
+  // sample: above a few thousand its cost grows as about N^1.5, past the O(N log N) of the
+  // rest of a sample.
+  std::uint64_t algebraic_connectivity_robots = 2000;
   NetworkConfig network;
 };
 

@@ -77,7 +77,8 @@ nlohmann::ordered_json describe_scenario(const Scenario& s) {
   out["convergence"] = {{"position_tolerance", c.position_tolerance_in(env.diameter())},
                         {"virtual_tolerance", c.virtual_tolerance_in(env.diameter())},
                         {"max_time", seconds(c.max_time)}};
-  out["metrics"] = {{"period", seconds(c.sample_period)}};
+  out["metrics"] = {{"period", seconds(c.sample_period)},
+                    {"algebraic_connectivity_robots", c.algebraic_connectivity_robots}};
   out["recording"] = {{"trajectory_period", s.recording.trajectory_period},
                       {"compress", s.recording.compress}};
   out["limits"] = {{"motion_steps", s.limits.motion_steps},

@@ -187,8 +187,10 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     if (auto t = v->find("max_time")) c.max_time = read_period(*t);
   }
   if (auto m = root.find("metrics")) {
-    m->only_keys({"period"});
-    c.sample_period = read_period(m->at("period"));
+    m->only_keys({"period", "algebraic_connectivity_robots"});
+    if (auto p = m->find("period")) c.sample_period = read_period(*p);
+    if (auto r = m->find("algebraic_connectivity_robots"))
+      c.algebraic_connectivity_robots = r->unsigned_integer();
   }
 }
 

@@ -264,6 +264,25 @@ TEST_CASE("the sparse algebraic connectivity is the same on every call", "[net][
   CHECK(comm_graph_metrics(1500, edges).algebraic_connectivity == a.algebraic_connectivity);
 }
 
+TEST_CASE("without the spectrum a connected graph's λ2 is NaN and the rest is unchanged",
+          "[net][comm_graph]") {
+  for (std::size_t n : {1500, 40}) {
+    const CommEdges edges = geometric_graph(n, n > 100 ? 0.07 : 0.02, 3);
+    const CommGraphMetrics with = comm_graph_metrics(n, edges);
+    const CommGraphMetrics without = comm_graph_metrics(n, edges, false);
+    CHECK(without.components == with.components);
+    CHECK(without.largest_component == with.largest_component);
+    CHECK(without.diameter == with.diameter);
+    CHECK(without.average_degree == with.average_degree);
+    if (with.components == 1) {
+      CHECK(with.algebraic_connectivity > 0.0);
+      CHECK(std::isnan(without.algebraic_connectivity));
+    } else {  // disconnected: 0 without any eigensolver
+      CHECK(without.algebraic_connectivity == 0.0);
+    }
+  }
+}
+
 TEST_CASE("pairs within a radius through the grid equal those of every pair", "[net][comm_graph]") {
   std::uint64_t seed = 500;
   for (std::size_t n : {0, 1, 2, 40, 700, 2500}) {

@@ -1,7 +1,11 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include "analysis/coverage_run.hpp"
+#include "analysis/metrics_sampler.hpp"
 #include "analysis/network_metrics.hpp"
+#include "analysis/result_fields.hpp"
 #include "core/geometry/uniform_density.hpp"
 #include "scenarios/scenario.hpp"
 #include "tests/robot/paper_scenarios.hpp"
@@ -127,4 +131,39 @@ TEST_CASE("sampled, noisy and lossy range sensing still covers the U", "[sensing
   CHECK(a.fingerprint == b.fingerprint);  // noise and dropout come from seeded streams
   // Without the imperfections the run differs.
   CHECK(a.fingerprint != run_coverage(paper("u_shape.json")).fingerprint);
+}
+
+TEST_CASE("metrics.algebraic_connectivity_robots bounds the runs whose samples get λ2",
+          "[network][metrics]") {
+  // u_shape's 5 robots, all in range of each other: a connected graph at every sample.
+  nlohmann::json j = with_network("u_shape.json", {{"range", 5.0}}).json;
+  const auto sampled = [&](std::uint64_t limit) {
+    j["metrics"] = {{"algebraic_connectivity_robots", limit}};
+    const Scenario s = parse_scenario(j, "u_shape", std::string(COVSIM_SOURCE_DIR) + "/scenarios");
+    CHECK(s.coverage.algebraic_connectivity_robots == limit);
+    MetricsSampler sampler;
+    const CoverageOutcome out = run_coverage(s, &sampler);
+    return std::make_pair(out.fingerprint, sampler.samples());
+  };
+  const auto [with_print, with] = sampled(5);
+  const auto [without_print, without] = sampled(4);
+  CHECK(with_print == without_print);  // a measure of the run, not part of it
+  REQUIRE(with.size() == without.size());
+  REQUIRE_FALSE(with.empty());
+  for (std::size_t k = 0; k < with.size(); ++k) {
+    CHECK(with[k].network.graph.components == 1);
+    CHECK(with[k].network.graph.algebraic_connectivity == Approx(5.0));  // complete: n
+    CHECK(std::isnan(without[k].network.graph.algebraic_connectivity));
+    CHECK(without[k].network.graph.diameter == with[k].network.graph.diameter);
+  }
+  CHECK(summarize_communication(with).algebraic_connectivity_min == Approx(5.0));
+  CHECK(std::isnan(summarize_communication(without).algebraic_connectivity_min));
+  // Not computed is null: an empty cell of metrics.csv, null in final.json.
+  const auto& fields = metrics_fields();
+  for (const auto& f : fields) {
+    if (f.name != "algebraic_connectivity") continue;
+    CHECK(f.get(with.front()).is_number());
+    CHECK(f.get(without.front()).is_null());
+    CHECK(csv_cell(f.get(without.front())).empty());
+  }
 }

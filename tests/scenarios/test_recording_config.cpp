@@ -50,3 +50,28 @@ TEST_CASE("recording.compress other than true or false is refused, naming its pa
   CHECK_THROWS_WITH(with_recording(R"({"compresss": true})"),
                     Catch::Contains("$.recording") && Catch::Contains("compresss"));
 }
+
+TEST_CASE("metrics.algebraic_connectivity_robots is a count, 2000 unless given",
+          "[scenario][metrics]") {
+  const auto with_metrics = [](const std::string& metrics) {
+    const nlohmann::json j = nlohmann::json::parse(
+        R"({"environment": {"outer": [[0, 0], [4, 0], [4, 4], [0, 4]]},
+            "density": {"type": "uniform"}, "robots": {"positions": [[1, 1], [3, 3]]},
+            "seed": 1, "metrics": )" +
+        metrics + "}");
+    return parse_scenario(j, "m.json", ".");
+  };
+  CHECK(with_metrics("{}").coverage.algebraic_connectivity_robots == 2000);
+  const Scenario s = with_metrics(R"({"algebraic_connectivity_robots": 0, "period": 0.25})");
+  CHECK(s.coverage.algebraic_connectivity_robots == 0);
+  CHECK(s.coverage.sample_period == SimTime::from_seconds(0.25));
+  const nlohmann::json described = describe_scenario(s);
+  CHECK(described.at("metrics").at("algebraic_connectivity_robots") == 0);
+  CHECK(parse_scenario(described, "described", ".").coverage.algebraic_connectivity_robots == 0);
+  for (const char* bad : {"-1", "1.5", R"("all")", "null", "1e30"}) {
+    INFO(bad);
+    CHECK_THROWS_WITH(
+        with_metrics(std::string(R"({"algebraic_connectivity_robots": )") + bad + "}"),
+        Catch::StartsWith("m.json: $.metrics.algebraic_connectivity_robots: "));
+  }
+}
