@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <iterator>
+#include <stdexcept>
 
 namespace covsim {
 
 void EventQueue::push_front(std::uint32_t record) {
   const FrontEntry e = front_entry(record);
-  if (batch_.empty() || runs_before(e, batch_least_)) batch_least_ = e;
+  if (batch_.empty() || RunsBefore{}(e, batch_least_)) batch_least_ = e;
   batch_.push_back(e);
 }
 
@@ -21,13 +22,13 @@ void EventQueue::absorb_batch() {
       std::push_heap(heap_.begin(), heap_.end(), RunsLater{});
     }
   } else {
-    std::sort(batch_.begin(), batch_.end(), runs_before);
+    sort_batch();
     if (rest == 0) {
       run_.swap(batch_);
     } else {
       merged_.clear();
       std::merge(run_.begin() + static_cast<std::ptrdiff_t>(run_next_), run_.end(), batch_.begin(),
-                 batch_.end(), std::back_inserter(merged_), runs_before);
+                 batch_.end(), std::back_inserter(merged_), RunsBefore{});
       run_.swap(merged_);
     }
     run_next_ = 0;
@@ -35,18 +36,44 @@ void EventQueue::absorb_batch() {
   batch_.clear();
 }
 
+void EventQueue::sort_batch() {
+  // Pushed during one instant, a batch is usually in sequence order already (as `low`
+  // orders it); then a stable radix sort on the bytes of `high` that vary, two for up to
+  // 65 536 entities, finishes it. Otherwise a comparison sort.
+  const auto by_low = [](const FrontEntry& a, const FrontEntry& b) { return a.low < b.low; };
+  if (batch_.size() < 64 || !std::is_sorted(batch_.begin(), batch_.end(), by_low)) {
+    std::sort(batch_.begin(), batch_.end(), RunsBefore{});
+    return;
+  }
+  std::uint64_t varying = 0;
+  for (const FrontEntry& e : batch_)
+    varying |= e.high ^ batch_.front().high;
+  for (int shift = 0; shift < 64; shift += 8) {
+    if (((varying >> shift) & 0xff) == 0) continue;
+    std::array<std::size_t, 257> start{};
+    for (const FrontEntry& e : batch_)
+      ++start[((e.high >> shift) & 0xff) + 1];
+    for (std::size_t d = 1; d < start.size(); ++d)
+      start[d] += start[d - 1];
+    merged_.resize(batch_.size());
+    for (const FrontEntry& e : batch_)
+      merged_[start[(e.high >> shift) & 0xff]++] = e;
+    batch_.swap(merged_);
+  }
+}
+
 std::uint32_t EventQueue::take_front() {
   const bool from_run = run_next_ < run_.size();
   if (!batch_.empty()) {
     // The batch is due when its least entry precedes both the run's and the heap's next.
-    const bool due = (!from_run || runs_before(batch_least_, run_[run_next_])) &&
-                     (heap_.empty() || runs_before(batch_least_, heap_.front()));
+    const bool due = (!from_run || RunsBefore{}(batch_least_, run_[run_next_])) &&
+                     (heap_.empty() || RunsBefore{}(batch_least_, heap_.front()));
     if (due) absorb_batch();
   }
   const bool run_first =
-      run_next_ < run_.size() && (heap_.empty() || runs_before(run_[run_next_], heap_.front()));
-  if (run_first) return run_[run_next_++].record;
-  const std::uint32_t record = heap_.front().record;
+      run_next_ < run_.size() && (heap_.empty() || RunsBefore{}(run_[run_next_], heap_.front()));
+  if (run_first) return run_[run_next_++].record();
+  const std::uint32_t record = heap_.front().record();
   std::pop_heap(heap_.begin(), heap_.end(), RunsLater{});
   heap_.pop_back();
   return record;
@@ -95,6 +122,9 @@ EventHandle EventQueue::push(SimTime t, EventKind kind, EntityId entity, Priorit
     records_.emplace_back();
   }
   Record& r = records_[index];
+  // Sequence numbers fill 56 bits of a front entry: 7e16 events, never reached.
+  if (next_seq_ >= kSeqLimit) [[unlikely]]
+    throw std::length_error("more than 2^56 events scheduled in one queue");
   r.seq = next_seq_++;
   r.payload = payload;
   r.timer = timer;
@@ -143,8 +173,8 @@ void EventQueue::free_record(std::uint32_t index) {
 template <class E>
 void EventQueue::drop_cancelled(std::vector<E>& bucket) {
   const auto cancelled = [this](const E& e) {
-    if (records_[e.record].state != State::cancelled) return false;
-    free_record(e.record);
+    if (records_[record_of(e)].state != State::cancelled) return false;
+    free_record(record_of(e));
     --cancelled_;
     return true;
   };
@@ -208,7 +238,7 @@ std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
 void EventQueue::rebase(std::uint64_t key) {
   std::vector<Entry> all;
   for (const FrontEntry& f : drain_front())
-    all.push_back(Entry{last_, f.record});
+    all.push_back(Entry{last_, f.record()});
   for (std::vector<Entry>& bucket : buckets_) {
     all.insert(all.end(), bucket.begin(), bucket.end());
     bucket.clear();

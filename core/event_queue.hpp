@@ -104,27 +104,37 @@ class EventQueue {
   // when small against the run. An instant's deliveries, pushed while its broadcasts run
   // and all due after them, are thus sorted once and read in sequence instead of passing
   // through a heap of tens of thousands.
+  // (priority, entity, sequence, record) in 8 + 32 + 56 + 32 bits, compared as one 128-bit
+  // number: 16 bytes, so that an instant's tens of thousands sort within the caches.
   struct FrontEntry {
-    std::uint64_t order;  // priority << 32 | entity
-    std::uint64_t seq;
-    std::uint32_t record;
+    std::uint64_t high;  // priority << 56 | entity << 24 | the sequence's top 24 bits
+    std::uint64_t low;   // the sequence's low 32 bits << 32 | record
+    std::uint32_t record() const { return static_cast<std::uint32_t>(low); }
   };
-  static bool runs_before(const FrontEntry& a, const FrontEntry& b) {
-    return a.order != b.order ? a.order < b.order : a.seq < b.seq;
-  }
+  static_assert(sizeof(FrontEntry) == 16);
+  static constexpr std::uint64_t kSeqLimit = std::uint64_t{1} << 56;
+  struct RunsBefore {
+    bool operator()(const FrontEntry& a, const FrontEntry& b) const {
+      return a.high != b.high ? a.high < b.high : a.low < b.low;
+    }
+  };
   // std heap functions keep the greatest on top, so "greater" means "runs later".
   struct RunsLater {
-    bool operator()(const FrontEntry& a, const FrontEntry& b) const { return runs_before(b, a); }
+    bool operator()(const FrontEntry& a, const FrontEntry& b) const { return RunsBefore{}(b, a); }
   };
   FrontEntry front_entry(std::uint32_t record) const {
     const Record& r = records_[record];
-    return {(std::uint64_t{r.priority} << 32) | r.entity, r.seq, record};
+    return {(std::uint64_t{r.priority} << 56) | (std::uint64_t{r.entity} << 24) | (r.seq >> 32),
+            (r.seq << 32) | record};
   }
+  static std::uint32_t record_of(const Entry& e) { return e.record; }
+  static std::uint32_t record_of(const FrontEntry& e) { return e.record(); }
   bool front_empty() const { return batch_.empty() && heap_.empty() && run_next_ == run_.size(); }
   // Removes the front's first entry (the front must not be empty) and returns its record.
   std::uint32_t take_front();
   // Moves the batch into the run or the heap.
   void absorb_batch();
+  void sort_batch();
   void push_front(std::uint32_t record);
   // Every front entry, the front left empty.
   std::vector<FrontEntry> drain_front();
@@ -147,7 +157,7 @@ class EventQueue {
   std::vector<FrontEntry> run_;    // sorted; entries before run_next_ are consumed
   std::size_t run_next_ = 0;
   std::vector<FrontEntry> heap_;    // a heap (RunsLater)
-  std::vector<FrontEntry> merged_;  // scratch for merging the batch into the run
+  std::vector<FrontEntry> merged_;  // scratch for sorting and merging the batch
   std::array<std::vector<Entry>, kBuckets> buckets_;
   std::array<std::uint64_t, kWords> occupied_{};  // bit b set when bucket b holds entries
   // The smallest key put into each bucket since it was last emptied: its entries' minimum
