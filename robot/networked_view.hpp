@@ -44,6 +44,8 @@ class NetworkedView final : public NeighborView {
   // delivery, which shares the broadcast's slot.
   void transmit(Kernel& k, std::uint32_t slot, std::uint32_t i, std::uint32_t j);
   std::uint32_t new_slot(const StateMessage& m);
+  // Robot j reads the message in `slot`.
+  void receive(std::uint32_t j, std::uint32_t slot);
 
   Kernel& kernel_;
   NetworkConfig config_;
@@ -62,6 +64,10 @@ class NetworkedView final : public NeighborView {
   };
   std::vector<InFlight> in_flight_;
   std::vector<std::uint32_t> free_slots_;
+  // Per robot, the slots of messages sent to it without delay and not yet read, and the
+  // payload of the one delivery event that reads them.
+  std::vector<std::vector<std::uint32_t>> inboxes_;
+  static constexpr std::uint64_t kInbox = UINT64_MAX;
   std::vector<bool> acquired_;
   SimTime t0_;
   NetworkTotals totals_;
