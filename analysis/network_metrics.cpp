@@ -76,7 +76,11 @@ NetworkSample NetworkMetrics::sample(const CoverageController& c) const {
   for (std::uint32_t i = 0; i < n; ++i) {
     // The polygon only: its moments are not needed here.
     const Knowledge k = net->knowledge(i, Generators::virtual_generators);
-    voronoi_cell(c.integrator(), k.points, k.self, cells[i]);
+    CellSummary unused;
+    if (const ConvexPolygon* kept = k.cache ? k.cache->find(k.points, k.self, unused) : nullptr)
+      cells[i] = *kept;  // loop 1 computed it from the table as it is
+    else
+      voronoi_cell(c.integrator(), k.points, k.self, cells[i]);
   }
   // Owners per lattice point, each cell tested only on the points in its bounding box.
   const int m = lattice_side;

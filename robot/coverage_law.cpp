@@ -18,10 +18,18 @@ CellSummary own_cell_summary(const CellIntegrator& integrator, const Knowledge& 
     if (cell != nullptr) cell->assign(p->cell(k.self).begin(), p->cell(k.self).end());
     return p->summary(k.self);
   }
+  CellSummary s;
+  if (k.cache != nullptr) {
+    if (const ConvexPolygon* kept = k.cache->find(k.points, k.self, s)) {
+      if (cell != nullptr) *cell = *kept;
+      return s;
+    }
+  }
   const Vec2 g = k.points[k.self];
   ConvexPolygon local;
   voronoi_cell(integrator, k.points, k.self, local);
-  const CellSummary s = summarize(integrator.integrate(local, g), g);
+  s = summarize(integrator.integrate(local, g), g);
+  if (k.cache != nullptr) k.cache->store(k.points, k.self, local, s);
   if (cell != nullptr) *cell = std::move(local);
   return s;
 }

@@ -12,6 +12,7 @@
 #include "core/geometry/cell_integrator.hpp"
 #include "core/geometry/voronoi_partition.hpp"
 #include "core/registry.hpp"
+#include "robot/own_cell_cache.hpp"
 #include "robot/robot.hpp"
 
 namespace covsim {
@@ -35,6 +36,8 @@ struct Knowledge {
   // and whose version changes whenever a generator moves (for a law's own caches).
   const GeneratorState* shared = nullptr;
   std::optional<std::uint64_t> version;
+  // Otherwise, where the robot keeps its own cell between loop-1 updates (may be null).
+  OwnCellCache* cache = nullptr;
   // The shared partition, if there is one (computed on first use).
   const VoronoiPartition* partition() const;
 };

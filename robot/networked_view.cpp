@@ -17,6 +17,7 @@ NetworkedView::NetworkedView(Kernel& kernel, const Environment& env, const Netwo
   if (config.channel.range) receivers_.emplace(*config.channel.range, positions);
   tables_.resize(n);
   inboxes_.resize(n);
+  cell_caches_.resize(2 * n);
   next_seq_.assign(n, 0);
   acquired_.assign(n, false);
   broadcast_kind_ = kernel_.add_kind(
@@ -84,7 +85,8 @@ Knowledge NetworkedView::knowledge(std::uint32_t i, Generators kind) const {
     self = known_.size();
     known_.push_back(own);
   }
-  return Knowledge{known_, self, kind, nullptr, std::nullopt};
+  return Knowledge{known_,  self,         kind,
+                   nullptr, std::nullopt, &cell_caches_[2 * i + (positions ? 1 : 0)]};
 }
 
 void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {

@@ -72,6 +72,8 @@ class NetworkedView final : public NeighborView {
   SimTime t0_;
   NetworkTotals totals_;
   mutable std::vector<Vec2> known_;  // what knowledge() returns points into
+  // Each robot's own cell of its virtual generator (2 i) and of its position (2 i + 1).
+  mutable std::vector<OwnCellCache> cell_caches_;
 };
 
 }  // namespace covsim

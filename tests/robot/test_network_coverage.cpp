@@ -7,6 +7,7 @@
 #include "analysis/network_metrics.hpp"
 #include "analysis/result_fields.hpp"
 #include "core/geometry/uniform_density.hpp"
+#include "core/random_stream.hpp"
 #include "scenarios/scenario.hpp"
 #include "tests/robot/paper_scenarios.hpp"
 
@@ -165,5 +166,63 @@ TEST_CASE("metrics.algebraic_connectivity_robots bounds the runs whose samples g
     CHECK(f.get(with.front()).is_number());
     CHECK(f.get(without.front()).is_null());
     CHECK(csv_cell(f.get(without.front())).empty());
+  }
+}
+
+TEST_CASE("messages without delay are read in one event per receiver and instant", "[network]") {
+  // office's 30 robots hear each other: 870 messages an instant, read by 30 events (one per
+  // receiver) beside the 30 broadcasts and the robots' own events.
+  Scenario s = with_network("office.json", {{"loss", {{"model", "bernoulli"}, {"p", 0.1}}}});
+  s.coverage.max_time = SimTime::from_seconds(20.0);
+  const CoverageOutcome out = run_coverage(s);
+  REQUIRE(out.decentralized);
+  CHECK(out.network.delivered > 50'000);
+  CHECK(out.events * 4 < out.network.delivered);
+}
+
+TEST_CASE("a robot's own cell is kept for the generators it came from, bit for bit",
+          "[network][cells]") {
+  const Scenario s = paper("u_shape.json");
+  const UniformDensity d;
+  const CellIntegrator integrator(*s.environment, d);
+  RandomStream rng(3, 0, "own-cell-cache-test");
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Vec2> g(2 + rng.below(30));
+    for (Vec2& p : g)
+      p = {rng.uniform(0.0, 1.0), rng.uniform(0.0, 1.0)};
+    if (trial == 0) g[1].x = 0.0;
+    const std::size_t self = rng.below(g.size());
+    OwnCellCache cache;
+    const auto same = [](const CellSummary& a, const CellSummary& b) {
+      return a.mass == b.mass && a.centroid == b.centroid && a.cost == b.cost;
+    };
+    ConvexPolygon plain_cell, cached_cell, kept_cell;
+    const CellSummary plain = own_cell_summary(
+        integrator,
+        Knowledge{g, self, Generators::virtual_generators, nullptr, std::nullopt, nullptr},
+        &plain_cell);
+    const Knowledge k{g, self, Generators::virtual_generators, nullptr, std::nullopt, &cache};
+    CellSummary found;
+    CHECK(cache.find(g, self, found) == nullptr);
+    CHECK(same(own_cell_summary(integrator, k, &cached_cell), plain));  // computed, stored
+    REQUIRE(cache.find(g, self, found) != nullptr);
+    CHECK(same(found, plain));
+    CHECK(same(own_cell_summary(integrator, k, &kept_cell), plain));  // from the cache
+    CHECK(cached_cell == plain_cell);
+    CHECK(kept_cell == plain_cell);
+    // Any other generators or self miss: one ulp, a zero's sign, another robot.
+    std::vector<Vec2> moved = g;
+    moved[0].y = std::nextafter(moved[0].y, 2.0);
+    CHECK(cache.find(moved, self, found) == nullptr);
+    CHECK(cache.find(g, (self + 1) % g.size(), found) == nullptr);
+    if (trial == 0) {
+      std::vector<Vec2> signed_zero = g;
+      signed_zero[1].x = -0.0;
+      CHECK(cache.find(signed_zero, self, found) == nullptr);
+    }
+    const Knowledge km{moved, self, Generators::virtual_generators, nullptr, std::nullopt, &cache};
+    CHECK(same(own_cell_summary(integrator, km),
+               own_cell_summary(integrator, Knowledge{moved, self, Generators::virtual_generators,
+                                                      nullptr, std::nullopt, nullptr})));
   }
 }
