@@ -22,9 +22,9 @@ FreeRay free_ray(const SensorReading& r, Vec2 u, double tolerance) {
   const ContactEdge* in = nullptr;
   const ContactEdge* out = nullptr;
   for (const ContactEdge& c : r.contacts) {
-    if (distance(c.b, x) <= tolerance)
+    if (within(c.b, x, tolerance))
       in = &c;
-    else if (distance(c.a, x) <= tolerance)
+    else if (within(c.a, x, tolerance))
       out = &c;
     else if (!left(c))
       return FreeRay{0.0, c.ring};
@@ -41,7 +41,11 @@ FreeRay free_ray(const SensorReading& r, Vec2 u, double tolerance) {
   for (std::size_t k = 0; k < r.visible.pieces.size(); ++k) {
     const Vec2 a = r.visible.pieces[k].a, s = r.visible.pieces[k].b - a;
     const double denom = cross(u, s);
-    if (std::fabs(denom) <= 1e-12 * norm(s)) continue;  // parallel: running along it
+    // Parallel: running along it. |s.x| + |s.y| bounds norm(s), so twice that decides the
+    // test without the hypot for all but nearly parallel pieces.
+    const double magnitude = std::fabs(denom);
+    if (magnitude <= 2e-12 * (std::fabs(s.x) + std::fabs(s.y)) && magnitude <= 1e-12 * norm(s))
+      continue;
     const double t = cross(a - x, s) / denom;
     const double v = cross(a - x, u) / denom;
     // A wall met within the tolerance is one the robot touches (judged above) unless it is

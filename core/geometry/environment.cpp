@@ -126,8 +126,9 @@ std::optional<std::uint32_t> Environment::locate(Vec2 p) const {
     if (found) return;
     for (int i = 0; i < 3; ++i) {
       const Vec2 a = mesh_.corner(t, i + 1), c = mesh_.corner(t, i + 2);
-      // Signed distance of p from the edge line, positive inside.
-      if (cross(c - a, p - a) < -tolerance_ * norm(c - a)) return;
+      // Signed distance of p from the edge line, positive inside (no length needed inside).
+      const double side = cross(c - a, p - a);
+      if (side < 0.0 && side < -tolerance_ * norm(c - a)) return;
     }
     found = t;
   });
@@ -192,7 +193,7 @@ std::vector<std::uint32_t> Environment::edges_at(Vec2 p) const {
   b.add(p - Vec2{tolerance_, tolerance_});
   b.add(p + Vec2{tolerance_, tolerance_});
   edge_index_.query(b, [&](std::uint32_t e) {
-    if (norm(project_to_segment(p, boundary_[e].a, boundary_[e].b).point - p) <= tolerance_)
+    if (within(project_to_segment(p, boundary_[e].a, boundary_[e].b).point, p, tolerance_))
       out.push_back(e);
   });
   std::sort(out.begin(), out.end());

@@ -46,6 +46,14 @@ inline double norm(Vec2 a) {
 inline double distance(Vec2 a, Vec2 b) {
   return norm(a - b);
 }
+// distance(a, b) <= r, the same answer bit for bit, without the hypot when a coordinate's
+// difference alone exceeds r (hypot is never below either coordinate's magnitude): most
+// tolerance tests in sensing and planning are of points far apart.
+inline bool within(Vec2 a, Vec2 b, double r) {
+  const Vec2 d = a - b;
+  if (std::fabs(d.x) > r || std::fabs(d.y) > r) return false;
+  return norm(d) <= r;
+}
 constexpr Vec2 perp(Vec2 a) {
   return {-a.y, a.x};
 }  // rotated +90 degrees

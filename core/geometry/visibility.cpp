@@ -65,7 +65,10 @@ struct Sorted {
 class Expansion {
  public:
   Expansion(const Environment& env, Vec2 p, double range)
-      : mesh_(env.mesh()), p_(p), range_(range), tol_(env.tolerance()) {}
+      : mesh_(env.mesh()), p_(p), range_(range), tol_(env.tolerance()) {
+    stack_.clear();
+    sorted_.clear();
+  }
 
   // Looks from p at edge i of triangle t, from its inner side, through the window from the
   // direction of point `right` to that of point `left`.
@@ -86,8 +89,15 @@ class Expansion {
       if (orientation(p_, w.right, w.left) <= 0) continue;  // empty window
       const auto& tri = mesh_.triangles[w.triangle];
       const Vec2 a = mesh_.corner(w.triangle, w.edge + 1), b = mesh_.corner(w.triangle, w.edge + 2);
-      Vec2 from = ray_segment(p_, w.right, a, b), to = ray_segment(p_, w.left, a, b);
       const std::int32_t n = tri.neighbor[static_cast<std::size_t>(w.edge)];
+      // Where the window meets the edge matters at a wall, and before an interior edge only
+      // for a finite range (with an infinite one, nothing is beyond it).
+      const bool finite_range = !std::isinf(range_);
+      Vec2 from, to;
+      if (n == FreeSpaceMesh::kBoundary || finite_range) {
+        from = ray_segment(p_, w.right, a, b);
+        to = ray_segment(p_, w.left, a, b);
+      }
       if (n == FreeSpaceMesh::kBoundary) {
         const Vec2 mid = 0.5 * (from + to) - p_;
         // Boundary edge k starts at mesh vertex k.
@@ -95,7 +105,8 @@ class Expansion {
           add(from, to, tri.v[static_cast<std::size_t>((w.edge + 1) % 3)], mid);
         continue;
       }
-      if (norm2(project_to_segment(p_, from, to).point - p_) > range_ * range_) continue;
+      if (finite_range && norm2(project_to_segment(p_, from, to).point - p_) > range_ * range_)
+        continue;
       // Into the neighbour: its vertex c opposite the shared edge splits the window; the
       // far edges run right -> c and c -> left.
       const auto next = static_cast<std::uint32_t>(n);
@@ -115,7 +126,7 @@ class Expansion {
     for (const Sorted& s : sorted_) {
       if (!out.pieces.empty()) {
         VisiblePiece& last = out.pieces.back();
-        if (last.edge == s.piece.edge && norm(last.b - s.piece.a) <= tol_) {
+        if (last.edge == s.piece.edge && within(last.b, s.piece.a, tol_)) {
           last.b = s.piece.b;
           continue;
         }
@@ -126,7 +137,7 @@ class Expansion {
     if (out.pieces.size() > 1) {
       VisiblePiece& first = out.pieces.front();
       const VisiblePiece& last = out.pieces.back();
-      if (last.edge == first.edge && norm(last.b - first.a) <= tol_) {
+      if (last.edge == first.edge && within(last.b, first.a, tol_)) {
         first.a = last.a;
         out.pieces.pop_back();
       }
@@ -135,7 +146,7 @@ class Expansion {
     for (std::size_t k = 0; k < n; ++k) {
       const VisiblePiece& cur = out.pieces[k];
       const VisiblePiece& next = out.pieces[(k + 1) % n];
-      if (norm(cur.b - next.a) > tol_) {
+      if (!within(cur.b, next.a, tol_)) {
         out.discontinuities.push_back(cur.b);
         out.discontinuities.push_back(next.a);
         out.discontinuity_edges.push_back(cur.edge);
@@ -154,9 +165,14 @@ class Expansion {
   Vec2 p_;
   double range_;
   double tol_;
-  std::vector<Window> stack_;
-  std::vector<Sorted> sorted_;
+  // Scratch kept per thread: a robot senses every step, and allocating these each time
+  // cost more than the searches that fill them.
+  static thread_local std::vector<Window> stack_;
+  static thread_local std::vector<Sorted> sorted_;
 };
+
+thread_local std::vector<Window> Expansion::stack_;
+thread_local std::vector<Sorted> Expansion::sorted_;
 
 // Where the viewpoint lies: in a triangle, exactly on one of its edges, or at one of its
 // corners.
@@ -175,6 +191,7 @@ std::optional<std::pair<std::uint32_t, int>> corner_near(const FreeSpaceMesh& me
   double best_d = tol;
   const auto consider = [&](std::uint32_t u) {
     for (int k = 0; k < 3; ++k) {
+      if (!within(mesh.corner(u, k), p, best_d)) continue;
       const double d = norm(mesh.corner(u, k) - p);
       if (d <= best_d) {
         best_d = d;
