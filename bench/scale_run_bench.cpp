@@ -6,6 +6,8 @@
 // N points per loop-2 tick (ten per simulated second). The counter `cpu_per_sim_s` is the
 // figure to compare: CPU seconds per simulated second, which for these single-threaded runs
 // is the wall time on an idle core and, unlike wall time, holds still on a shared machine.
+// Decentralized runs also count `messages_per_robot_s`, the messages a robot reads per
+// simulated second.
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
@@ -43,9 +45,19 @@ void report(benchmark::State& state, double simulated_seconds_per_iteration) {
 }
 
 void run(benchmark::State& state, const covsim::Scenario& s) {
-  for (auto _ : state)
-    benchmark::DoNotOptimize(covsim::run_coverage(s).fingerprint);
+  covsim::CoverageOutcome out;
+  for (auto _ : state) {
+    out = covsim::run_coverage(s);
+    benchmark::DoNotOptimize(out.fingerprint);
+  }
   report(state, kSimulatedSeconds);
+  // The work a decentralized run grows with: messages each robot reads per simulated
+  // second, which rise with N at constant density as fewer robots sit near the boundary.
+  if (out.decentralized) {
+    state.counters["messages_per_robot_s"] =
+        static_cast<double>(out.network.delivered) /
+        (static_cast<double>(s.robot_positions.size()) * kSimulatedSeconds);
+  }
 }
 
 void BM_ScaleRun(benchmark::State& state) {
