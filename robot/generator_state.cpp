@@ -17,10 +17,16 @@ void GeneratorState::move(Generators k, std::uint32_t i, Vec2 p) {
 
 const VoronoiPartition& GeneratorState::partition(Generators k) const {
   const Kind& kind = this->kind(k);
-  if (!kind.partition || kind.partition_version != kind.version) {
+  if (!kind.partition) {
     kind.partition.emplace(integrator_, kind.points, VoronoiPartition::Coincident::split);
-    kind.partition_version = kind.version;
+  } else if (kind.partition_version != kind.version) {
+    // Cells away from the generators that moved are kept from the last partition.
+    VoronoiPartition next(integrator_, kind.points, VoronoiPartition::Coincident::split,
+                          *kind.partition);
+    kind.partition.reset();
+    kind.partition.emplace(std::move(next));
   }
+  kind.partition_version = kind.version;
   return *kind.partition;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <tuple>
 
@@ -71,6 +72,41 @@ VoronoiPartition::VoronoiPartition(const CellIntegrator& integrator, std::vector
       neighbors_(delaunay_neighbors(coincident == Coincident::reject ? generators_
                                                                      : coincidence_.distinct)),
       cells_(generators_.size()) {}
+
+VoronoiPartition::VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
+                                   Coincident coincident, const VoronoiPartition& previous)
+    : VoronoiPartition(integrator, std::move(generators), coincident) {
+  if (&previous.integrator_ != &integrator_ || previous.size() != size()) return;
+  for (std::size_t i = 0; i < size(); ++i) {
+    if (previous.cells_[i].done && same_inputs(i, previous)) cells_[i] = previous.cells_[i];
+  }
+}
+
+namespace {
+bool same_bits(Vec2 a, Vec2 b) {
+  return std::memcmp(&a, &b, sizeof(Vec2)) == 0;
+}
+}  // namespace
+
+bool VoronoiPartition::same_inputs(std::size_t i, const VoronoiPartition& other) const {
+  // What cell_of() and the integration read: the generator, its point, its rank and count
+  // among coincident generators, and its point's neighbours in order.
+  const Coincidence& a = coincidence_;
+  const Coincidence& b = other.coincidence_;
+  if (!same_bits(generators_[i], other.generators_[i]) || a.rank[i] != b.rank[i] ||
+      a.count[i] != b.count[i])
+    return false;
+  const std::size_t d = a.point[i], e = b.point[i];
+  if (!same_bits(a.distinct[d], b.distinct[e])) return false;
+  const std::uint32_t n = neighbors_.start[d + 1] - neighbors_.start[d];
+  if (other.neighbors_.start[e + 1] - other.neighbors_.start[e] != n) return false;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (!same_bits(a.distinct[neighbors_.index[neighbors_.start[d] + k]],
+                   b.distinct[other.neighbors_.index[other.neighbors_.start[e] + k]]))
+      return false;
+  }
+  return true;
+}
 
 const VoronoiPartition::Cell& VoronoiPartition::computed(std::size_t i) const {
   Cell& c = cells_[i];

@@ -24,6 +24,12 @@ class VoronoiPartition {
   // generators, and for coincident ones unless told to split.
   VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
                    Coincident coincident = Coincident::reject);
+  // The same, keeping the cells `previous` has computed whose generator, place among
+  // coincident generators and Delaunay neighbours (in order) are the same bit for bit, so
+  // the same cell would be clipped: after a few generators move, only the cells around
+  // them are clipped again. Nothing is kept across different integrators.
+  VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
+                   Coincident coincident, const VoronoiPartition& previous);
 
   std::size_t size() const { return generators_.size(); }
   const std::vector<Vec2>& generators() const { return generators_; }
@@ -37,7 +43,8 @@ class VoronoiPartition {
   // Remark 1 compares such costs); cost(generators()) is the partition's own cost.
   double cost(std::span<const Vec2> points) const;
   double cost() const { return cost(generators_); }
-  // How many cells have been clipped so far (for tests and benchmarks of the laziness).
+  // How many cells have been clipped so far, not counting those kept from a previous
+  // partition (for tests and benchmarks of the laziness).
   std::size_t cells_computed() const { return cells_computed_; }
 
   // The distinct points among the generators, and for each generator the index of its
@@ -55,6 +62,8 @@ class VoronoiPartition {
     Moments moments;
   };
   const Cell& computed(std::size_t i) const;
+  // Whether cell i's inputs are the same, bit for bit, as cell i's of `other`.
+  bool same_inputs(std::size_t i, const VoronoiPartition& other) const;
 
   const CellIntegrator& integrator_;
   std::vector<Vec2> generators_;

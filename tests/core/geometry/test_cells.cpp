@@ -237,3 +237,54 @@ TEST_CASE("a partition clips only the cells asked for, the same in any order", "
     REQUIRE(std::equal(a.begin(), a.end(), b.begin(), b.end()));
   }
 }
+
+TEST_CASE("a partition keeps the previous one's cells whose inputs are unchanged, bit for bit",
+          "[cells]") {
+  World w(square(0, 0, 10, 10), {square(4, 4, 6, 6)});
+  RandomStream rng(19, 0, "kept-cells-test");
+  std::vector<Vec2> gens;
+  for (int i = 0; i < 200; ++i)
+    gens.push_back({rng.uniform(0, 10), rng.uniform(0, 10)});
+  gens[7] = gens[3];  // two coincident generators, split into wedges
+  const auto same_cells = [](const VoronoiPartition& a, const VoronoiPartition& b) {
+    bool same = a.size() == b.size();
+    for (std::size_t i = 0; same && i < a.size(); ++i) {
+      const auto ca = a.cell(i), cb = b.cell(i);
+      same = std::equal(ca.begin(), ca.end(), cb.begin(), cb.end()) &&
+             a.moments(i).mass == b.moments(i).mass &&
+             a.summary(i).centroid == b.summary(i).centroid &&
+             a.summary(i).cost == b.summary(i).cost;
+    }
+    return same;
+  };
+  const auto split = VoronoiPartition::Coincident::split;
+  const VoronoiPartition before(w.cells, gens, split);
+  (void)before.cost();  // every cell computed
+  for (std::size_t moved : {0, 3, 150}) {
+    std::vector<Vec2> next = gens;
+    next[moved] += Vec2{0.05, -0.03};
+    const VoronoiPartition kept(w.cells, next, split, before);
+    const VoronoiPartition fresh(w.cells, next, split);
+    CHECK(same_cells(kept, fresh));
+    // Only the moved generator's cell and those of its neighbours, before and after, are
+    // clipped again: a few, not 200.
+    INFO("moved " << moved << ", clipped " << kept.cells_computed());
+    CHECK(kept.cells_computed() >= 1);
+    CHECK(kept.cells_computed() <= 25);
+    CHECK(fresh.cells_computed() == 200);
+  }
+  // Unchanged generators keep every cell; nothing is kept from another integrator, or from
+  // a partition with another number of generators.
+  const VoronoiPartition same(w.cells, gens, split, before);
+  (void)same.cost();
+  CHECK(same.cells_computed() == 0);
+  CHECK(same_cells(same, before));
+  const World other(square(0, 0, 10, 10), {square(4, 4, 6, 6)});
+  const VoronoiPartition elsewhere(other.cells, gens, split, before);
+  (void)elsewhere.cost();
+  CHECK(elsewhere.cells_computed() == 200);
+  std::vector<Vec2> fewer(gens.begin(), gens.end() - 1);
+  const VoronoiPartition smaller(w.cells, fewer, split, before);
+  (void)smaller.cost();
+  CHECK(smaller.cells_computed() == 199);
+}
