@@ -77,7 +77,8 @@ NetworkSample NetworkMetrics::sample(const CoverageController& c) const {
     // The polygon only: its moments are not needed here.
     const Knowledge k = net->knowledge(i, Generators::virtual_generators);
     CellSummary unused;
-    if (const ConvexPolygon* kept = k.cache ? k.cache->find(k.points, k.self, unused) : nullptr)
+    if (const ConvexPolygon* kept =
+            k.cache ? k.cache->find(c.integrator(), k.points, k.self, unused) : nullptr)
       cells[i] = *kept;  // loop 1 computed it from the table as it is
     else
       voronoi_cell(c.integrator(), k.points, k.self, cells[i]);

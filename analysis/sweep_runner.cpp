@@ -389,7 +389,10 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
     for (const std::string& m : sweep_metrics()) {
       std::vector<double> xs;
       for (const SweepResult* r : rs) {
-        if (!r->error) xs.push_back(r->number(m));
+        // A measure a run did not take (null: λ2 above metrics.algebraic_connectivity_robots)
+        // is no sample.
+        const double x = r->error ? NAN : r->number(m);
+        if (!std::isnan(x)) xs.push_back(x);
       }
       const SampleSummary s = summarize_sample(xs);
       out += s.n == 0   ? ",,,"
@@ -437,6 +440,8 @@ std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<Sw
       for (const SweepResult& r : results) {
         const SweepRun& run = runs.at(r.index);
         if (r.error || run.values[p].is_null()) continue;
+        const double y = r.number(metric);
+        if (std::isnan(y)) continue;  // not taken by that run
         std::string label;
         for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
           const bool names_line = group_index ? q == *group_index : varies[q];
@@ -444,8 +449,7 @@ std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<Sw
             label +=
                 (label.empty() ? "" : ", ") + spec.parameters[q] + " = " + csv_value(run.values[q]);
         }
-        lines[label.empty() ? "mean over seeds" : label][run.values[p].get<double>()].push_back(
-            r.number(metric));
+        lines[label.empty() ? "mean over seeds" : label][run.values[p].get<double>()].push_back(y);
       }
       std::vector<ChartSeries> series;
       for (const auto& [label, points] : lines) {

@@ -20,7 +20,7 @@ CellSummary own_cell_summary(const CellIntegrator& integrator, const Knowledge& 
   }
   CellSummary s;
   if (k.cache != nullptr) {
-    if (const ConvexPolygon* kept = k.cache->find(k.points, k.self, s)) {
+    if (const ConvexPolygon* kept = k.cache->find(integrator, k.points, k.self, s)) {
       if (cell != nullptr) *cell = *kept;
       return s;
     }
@@ -29,7 +29,7 @@ CellSummary own_cell_summary(const CellIntegrator& integrator, const Knowledge& 
   ConvexPolygon local;
   voronoi_cell(integrator, k.points, k.self, local);
   s = summarize(integrator.integrate(local, g), g);
-  if (k.cache != nullptr) k.cache->store(k.points, k.self, local, s);
+  if (k.cache != nullptr) k.cache->store(integrator, k.points, k.self, local, s);
   if (cell != nullptr) *cell = std::move(local);
   return s;
 }

@@ -3,7 +3,8 @@
 // sequence number, the send time) every broadcast period through the channel (range, line
 // of sight, loss and delay models); delivered messages update the receiver's neighbour
 // table (the newest by sequence number), and a robot knows what its table holds. Events:
-// "broadcast" (class 3) per robot, "deliver" (class 4) per delivered message.
+// "broadcast" (class 3) per robot; "deliver" (class 4) per delayed message, and one per
+// receiver and instant for the messages without delay.
 //
 // Algorithm 1 acquires the neighbours (line 3) before its first Lloyd step: a robot is
 // ready once NetworkConfig::acquire_time() has passed since the start and it has heard

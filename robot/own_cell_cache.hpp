@@ -15,14 +15,15 @@ namespace covsim {
 
 class OwnCellCache {
  public:
-  // The cell and summary stored for exactly these generators (bit patterns) and self, if
-  // the last store was for them.
-  const ConvexPolygon* find(std::span<const Vec2> generators, std::size_t self,
-                            CellSummary& summary) const;
-  void store(std::span<const Vec2> generators, std::size_t self, const ConvexPolygon& cell,
-             const CellSummary& summary);
+  // The cell and summary stored for exactly these generators (bit patterns), self and
+  // integrator, if the last store was for them.
+  const ConvexPolygon* find(const CellIntegrator& integrator, std::span<const Vec2> generators,
+                            std::size_t self, CellSummary& summary) const;
+  void store(const CellIntegrator& integrator, std::span<const Vec2> generators, std::size_t self,
+             const ConvexPolygon& cell, const CellSummary& summary);
 
  private:
+  const CellIntegrator* integrator_ = nullptr;
   std::vector<Vec2> generators_;
   std::size_t self_ = 0;
   bool valid_ = false;

@@ -54,6 +54,12 @@ inline bool within(Vec2 a, Vec2 b, double r) {
   if (std::fabs(d.x) > r || std::fabs(d.y) > r) return false;
   return norm(d) <= r;
 }
+// distance(a, b) > r in the same way (not !within: both are false for NaN).
+inline bool beyond(Vec2 a, Vec2 b, double r) {
+  const Vec2 d = a - b;
+  if (std::fabs(d.x) > r || std::fabs(d.y) > r) return true;
+  return norm(d) > r;
+}
 constexpr Vec2 perp(Vec2 a) {
   return {-a.y, a.x};
 }  // rotated +90 degrees

@@ -146,7 +146,7 @@ class Expansion {
     for (std::size_t k = 0; k < n; ++k) {
       const VisiblePiece& cur = out.pieces[k];
       const VisiblePiece& next = out.pieces[(k + 1) % n];
-      if (!within(cur.b, next.a, tol_)) {
+      if (beyond(cur.b, next.a, tol_)) {
         out.discontinuities.push_back(cur.b);
         out.discontinuities.push_back(next.a);
         out.discontinuity_edges.push_back(cur.edge);

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <filesystem>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -311,4 +313,43 @@ TEST_CASE("runs record their communication, and seeds deploy robots apart", "[sw
   SweepSpec merged;
   merge_sweeps({dir / "out"}, dir / "merged", merged);
   CHECK(fs::exists(dir / "merged" / "runs" / "3.metrics.csv"));
+}
+
+TEST_CASE("a measure no run took is left empty in summary.csv, never nan", "[sweep]") {
+  // λ2 switched off for every robot count: each run's algebraic_connectivity_min is null
+  // while its graph stays connected (u_shape's robots all within range).
+  const fs::path dir = temp_dir("untaken");
+  const std::string u = std::string(COVSIM_SOURCE_DIR) + "/scenarios/u_shape.json";
+  const SweepSpec spec = load_sweep(write_sweep(dir, R"({"scenario": ")" + u + R"(",
+      "grid": {"network": [{"range": 5.0}], "metrics.algebraic_connectivity_robots": [0, 10]},
+      "seeds": [1, 2]})"));
+  const auto results = run_sweep(spec, dir / "out", SweepOptions{2, false, 0, 1, false});
+  REQUIRE(results.size() == 4);
+  for (const SweepResult& r : results) {
+    REQUIRE_FALSE(r.error);
+    CHECK(std::isnan(r.number("algebraic_connectivity_min")) == (r.index < 2));
+  }
+  write_summary_csv(dir / "out" / "summary.csv", spec, results);
+  std::ifstream in(dir / "out" / "summary.csv");
+  std::string header, off, on;
+  std::getline(in, header);
+  std::getline(in, off);
+  std::getline(in, on);
+  CHECK_THAT(off + on, !Catch::Contains("nan"));
+  // The column's mean, sd and interval: empty without λ2, numbers with it.
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');)
+      out.push_back(cell);
+    return out;
+  };
+  const std::vector<std::string> names = cells(header), a = cells(off), b = cells(on);
+  const auto at = std::find(names.begin(), names.end(), "algebraic_connectivity_min_mean");
+  REQUIRE(at != names.end());
+  const auto k = static_cast<std::size_t>(at - names.begin());
+  REQUIRE(a.size() > k);
+  REQUIRE(b.size() > k);
+  CHECK(a[k].empty());
+  CHECK(std::stod(b[k]) > 0);
 }

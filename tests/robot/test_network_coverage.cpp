@@ -159,7 +159,7 @@ TEST_CASE("metrics.algebraic_connectivity_robots bounds the runs whose samples g
   }
   CHECK(summarize_communication(with).algebraic_connectivity_min == Approx(5.0));
   CHECK(std::isnan(summarize_communication(without).algebraic_connectivity_min));
-  // Not computed is null: an empty cell of metrics.csv, null in final.json.
+  // Not computed is null: an empty cell of metrics.csv (and of a sweep's runs.csv).
   const auto& fields = metrics_fields();
   for (const auto& f : fields) {
     if (f.name != "algebraic_connectivity") continue;
@@ -203,22 +203,24 @@ TEST_CASE("a robot's own cell is kept for the generators it came from, bit for b
         &plain_cell);
     const Knowledge k{g, self, Generators::virtual_generators, nullptr, std::nullopt, &cache};
     CellSummary found;
-    CHECK(cache.find(g, self, found) == nullptr);
+    CHECK(cache.find(integrator, g, self, found) == nullptr);
     CHECK(same(own_cell_summary(integrator, k, &cached_cell), plain));  // computed, stored
-    REQUIRE(cache.find(g, self, found) != nullptr);
+    REQUIRE(cache.find(integrator, g, self, found) != nullptr);
     CHECK(same(found, plain));
     CHECK(same(own_cell_summary(integrator, k, &kept_cell), plain));  // from the cache
     CHECK(cached_cell == plain_cell);
     CHECK(kept_cell == plain_cell);
-    // Any other generators or self miss: one ulp, a zero's sign, another robot.
+    // Any other generators, self or integrator miss: one ulp, a zero's sign, another robot.
     std::vector<Vec2> moved = g;
     moved[0].y = std::nextafter(moved[0].y, 2.0);
-    CHECK(cache.find(moved, self, found) == nullptr);
-    CHECK(cache.find(g, (self + 1) % g.size(), found) == nullptr);
+    CHECK(cache.find(integrator, moved, self, found) == nullptr);
+    CHECK(cache.find(integrator, g, (self + 1) % g.size(), found) == nullptr);
+    const CellIntegrator other(*s.environment, d);  // equal, but another: no assumption
+    CHECK(cache.find(other, g, self, found) == nullptr);
     if (trial == 0) {
       std::vector<Vec2> signed_zero = g;
       signed_zero[1].x = -0.0;
-      CHECK(cache.find(signed_zero, self, found) == nullptr);
+      CHECK(cache.find(integrator, signed_zero, self, found) == nullptr);
     }
     const Knowledge km{moved, self, Generators::virtual_generators, nullptr, std::nullopt, &cache};
     CHECK(same(own_cell_summary(integrator, km),
