@@ -1,5 +1,7 @@
 #include "robot/generator_state.hpp"
 
+#include <utility>
+
 namespace covsim {
 
 GeneratorState::GeneratorState(const CellIntegrator& integrator, const std::vector<Vec2>& starts)
@@ -22,7 +24,7 @@ const VoronoiPartition& GeneratorState::partition(Generators k) const {
   } else if (kind.partition_version != kind.version) {
     // Cells away from the generators that moved are kept from the last partition.
     VoronoiPartition next(integrator_, kind.points, VoronoiPartition::Coincident::split,
-                          *kind.partition);
+                          std::move(*kind.partition));
     kind.partition.reset();
     kind.partition.emplace(std::move(next));
   }

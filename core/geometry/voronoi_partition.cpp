@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
 
 #include "core/geometry/coincident_wedge.hpp"
 #include "core/geometry/delaunay.hpp"
@@ -74,11 +75,13 @@ VoronoiPartition::VoronoiPartition(const CellIntegrator& integrator, std::vector
       cells_(generators_.size()) {}
 
 VoronoiPartition::VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
-                                   Coincident coincident, const VoronoiPartition& previous)
+                                   Coincident coincident, VoronoiPartition&& previous)
     : VoronoiPartition(integrator, std::move(generators), coincident) {
   if (&previous.integrator_ != &integrator_ || previous.size() != size()) return;
   for (std::size_t i = 0; i < size(); ++i) {
-    if (previous.cells_[i].done && same_inputs(i, previous)) cells_[i] = previous.cells_[i];
+    // Moved, not copied: each tick would otherwise allocate every kept polygon anew.
+    if (previous.cells_[i].done && same_inputs(i, previous))
+      cells_[i] = std::move(previous.cells_[i]);
   }
 }
 

@@ -27,9 +27,10 @@ class VoronoiPartition {
   // The same, keeping the cells `previous` has computed whose generator, place among
   // coincident generators and Delaunay neighbours (in order) are the same bit for bit, so
   // the same cell would be clipped: after a few generators move, only the cells around
-  // them are clipped again. Nothing is kept across different integrators.
+  // them are clipped again. Nothing is kept across different integrators. The kept cells
+  // are moved out of `previous`, which is spent.
   VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
-                   Coincident coincident, const VoronoiPartition& previous);
+                   Coincident coincident, VoronoiPartition&& previous);
 
   std::size_t size() const { return generators_.size(); }
   const std::vector<Vec2>& generators() const { return generators_; }

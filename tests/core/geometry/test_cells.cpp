@@ -263,7 +263,7 @@ TEST_CASE("a partition keeps the previous one's cells whose inputs are unchanged
   for (std::size_t moved : {0, 3, 150}) {
     std::vector<Vec2> next = gens;
     next[moved] += Vec2{0.05, -0.03};
-    const VoronoiPartition kept(w.cells, next, split, before);
+    const VoronoiPartition kept(w.cells, next, split, VoronoiPartition(before));
     const VoronoiPartition fresh(w.cells, next, split);
     CHECK(same_cells(kept, fresh));
     // Only the moved generator's cell and those of its neighbours, before and after, are
@@ -275,16 +275,16 @@ TEST_CASE("a partition keeps the previous one's cells whose inputs are unchanged
   }
   // Unchanged generators keep every cell; nothing is kept from another integrator, or from
   // a partition with another number of generators.
-  const VoronoiPartition same(w.cells, gens, split, before);
+  const VoronoiPartition same(w.cells, gens, split, VoronoiPartition(before));
   (void)same.cost();
   CHECK(same.cells_computed() == 0);
   CHECK(same_cells(same, before));
   const World other(square(0, 0, 10, 10), {square(4, 4, 6, 6)});
-  const VoronoiPartition elsewhere(other.cells, gens, split, before);
+  const VoronoiPartition elsewhere(other.cells, gens, split, VoronoiPartition(before));
   (void)elsewhere.cost();
   CHECK(elsewhere.cells_computed() == 200);
   std::vector<Vec2> fewer(gens.begin(), gens.end() - 1);
-  const VoronoiPartition smaller(w.cells, fewer, split, before);
+  const VoronoiPartition smaller(w.cells, fewer, split, VoronoiPartition(before));
   (void)smaller.cost();
   CHECK(smaller.cells_computed() == 199);
 }
