@@ -1,7 +1,6 @@
 #include "planners/planner_registry.hpp"
 
 #include "planners/grid_astar.hpp"
-#include "planners/no_planner.hpp"
 #include "planners/potential_field.hpp"
 #include "planners/straight_line.hpp"
 #include "planners/tangent_bug.hpp"

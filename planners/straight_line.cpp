@@ -11,11 +11,12 @@ PlanStep StraightLine::step(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
   if (status_ != PlanStatus::moving) return PlanStep{x, status_};
   const double d = distance(x, goal_);
-  if (d <= env_.tolerance()) {
+  if (d <= (stops_at_walls_ ? env_.tolerance() : max_step)) {
     status_ = PlanStatus::reached;
     return PlanStep{goal_, status_};
   }
   const Vec2 want = d <= max_step ? goal_ : x + (max_step / d) * (goal_ - x);
+  if (!stops_at_walls_) return PlanStep{want, status_};
   const Vec2 next = env_.advance(x, want);
   // A wall in the way: stop at it (the step that reaches the wall still moves).
   if (distance(next, x) <= env_.tolerance()) status_ = PlanStatus::stalled;
@@ -30,6 +31,19 @@ PlannerEntry straight_line_entry() {
   e.make = [](const PlannerContext& ctx, const Params&) -> PlannerSource {
     const Environment* env = &ctx.environment;
     return [env] { return std::make_unique<StraightLine>(*env); };
+  };
+  return e;
+}
+
+PlannerEntry no_planner_entry() {
+  PlannerEntry e;
+  e.name = "none";
+  e.description =
+      "no planner: straight at the target through whatever is in the way (the paper's "
+      "Section II baselines); a motion that leaves Ω ends the run";
+  e.make = [](const PlannerContext& ctx, const Params&) -> PlannerSource {
+    const Environment* env = &ctx.environment;
+    return [env] { return std::make_unique<StraightLine>(*env, false); };
   };
   return e;
 }
