@@ -4,6 +4,7 @@
 // Remark 1, and the fingerprint.
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -50,8 +51,9 @@ struct CoverageOutcome {
   // its final value (sampled every metrics period), and the robots' total path length.
   double time_to_10_percent = 0.0, time_to_5_percent = 0.0, time_to_1_percent = 0.0;
   // The final real cost over the least one sampled during the run (1: it ended at its best;
-  // above 1, the last moves undid part of what was won).
-  double cost_to_best = 1.0;
+  // above 1, the last moves undid part of what was won; unknown for a run read from a
+  // folder written before it was measured).
+  double cost_to_best = NAN;
   double path_length = 0.0;
   // Sums and means of the robots' failure measures.
   std::uint64_t target_outside_steps = 0;

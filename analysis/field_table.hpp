@@ -27,6 +27,9 @@ struct Field {
   std::function<void(Record&, const nlohmann::json&)> set;
   // Summarised per setting in summary.csv (mean, standard deviation, 95% interval).
   bool summarized = false;
+  // Added after records were first written: a record without it (an older run folder) reads
+  // as the record's default for it, rather than as damaged.
+  bool added_later = false;
 };
 
 template <class Record>

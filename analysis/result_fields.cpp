@@ -79,6 +79,12 @@ const FieldTable<RobotOutcome>& robot_fields() {
 }
 
 namespace {
+template <class R>
+Field<R> later(Field<R> f) {
+  f.added_later = true;
+  return f;
+}
+
 // A field for an incident that stopped the run (RobotIncident): null, or its robot, time,
 // goal and position.
 Field<CoverageOutcome> incident(std::string name, std::string description,
@@ -168,9 +174,10 @@ const FieldTable<CoverageOutcome>& final_fields() {
              &O::time_to_5_percent),
       member("convergence.time_to_1_percent", FieldKind::number, "s", "the same within 1%",
              &O::time_to_1_percent),
-      member("convergence.cost_to_best", FieldKind::number, "",
-             "the final real cost over the least one sampled during the run (1: ended at its best)",
-             &O::cost_to_best),
+      later(member("convergence.cost_to_best", FieldKind::number, "",
+                   "the final real cost over the least one sampled during the run (1: ended at "
+                   "its best)",
+                   &O::cost_to_best)),
       member("convergence.path_length", FieldKind::number, "m", "all robots' paths",
              &O::path_length),
       member("failures.target_outside_steps", FieldKind::integer, "",
@@ -193,9 +200,10 @@ const FieldTable<CoverageOutcome>& final_fields() {
       incident("planner_failure",
                "null, or the robot, time, goal and position of a planner failure",
                &O::planner_failure),
-      incident("left_environment",
-               "null, or the robot, time, goal and crossing point of a robot that drove out of Ω",
-               &O::left_environment),
+      later(incident(
+          "left_environment",
+          "null, or the robot, time, goal and crossing point of a robot that drove out of Ω",
+          &O::left_environment)),
       member("events", FieldKind::integer, "", "events dispatched", &O::events),
       member("seed", FieldKind::integer, "", "the run's seed", &O::seed),
       Field<O>{"provenance", FieldKind::json, "",

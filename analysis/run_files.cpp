@@ -110,6 +110,7 @@ void read_fields(const FieldTable<Record>& table, const nlohmann::json& j, const
   for (const auto& f : table) {
     if (!f.set) continue;
     const nlohmann::json* v = at_path(j, f.name);
+    if (v == nullptr && f.added_later) continue;
     if (v == nullptr)
       throw ScenarioError(fmt::format("{}: $.{}: missing required key", file.string(), f.name));
     try {

@@ -52,17 +52,25 @@ Modes split_modes(const std::vector<double>& xs) {
   std::vector<double> s = xs;
   std::sort(s.begin(), s.end());
   const std::size_t n = s.size();
-  if (n < 4) return m;
+  if (n < kModesMinSample) return m;
+  // Each side at least 15% of the sample (and two values): a straggler is no mode.
+  const std::size_t side =
+      std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil(0.15 * static_cast<double>(n))));
   std::size_t cut = 0;  // the lower mode is s[0 .. cut)
   double gap = -1.0;
-  for (std::size_t k = 2; k + 2 <= n; ++k) {
+  for (std::size_t k = side; k + side <= n; ++k) {
     if (s[k] - s[k - 1] > gap) {
       gap = s[k] - s[k - 1];
       cut = k;
     }
   }
+  if (cut == 0) return m;
+  // Empty space one and a half times as wide as either side, and a tenth of the values'
+  // scale: a heavy tail's widest gap, or values that come in steps (a sampling period),
+  // do not qualify.
   const double low_range = s[cut - 1] - s[0], high_range = s[n - 1] - s[cut];
-  if (!(gap > low_range && gap > high_range)) return m;
+  const double scale = std::max(std::fabs(s[0]), std::fabs(s[n - 1]));
+  if (!(gap > 1.5 * std::max(low_range, high_range) && gap > 0.1 * scale)) return m;
   m.bimodal = true;
   m.low_fraction = static_cast<double>(cut) / static_cast<double>(n);
   const std::vector<double> low(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(cut));

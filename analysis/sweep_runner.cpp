@@ -404,7 +404,7 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
       out += s.n == 0 ? ",,," : fmt::format(",{},{},{}", s.median, s.q1, s.q3);
       // Modes need a sample to split: two or more runs on each side.
       const Modes modes = split_modes(xs);
-      out += s.n < 4         ? ",,,,"
+      out += s.n < kModesMinSample ? ",,,,"
              : modes.bimodal ? fmt::format(",2,{},{},{}", modes.low_fraction, modes.low_median,
                                            modes.high_median)
                              : ",1,,,";

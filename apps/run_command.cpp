@@ -124,8 +124,9 @@ void add_run_command(CLI::App& app) {
     fmt::print("fingerprint {}\n", Fingerprint::to_hex(outcome.fingerprint));
     // A result, not an error: the baseline without a planner fails as the paper says.
     if (const auto& l = outcome.left_environment)
-      fmt::print("robot {} left Ω at ({}, {}), t = {} s, on its way to ({}, {})\n", l->robot,
-                 l->position.x, l->position.y, l->time.seconds(), l->goal.x, l->goal.y);
+      fmt::print(
+          "robot {} left Ω at ({:.6g}, {:.6g}), t = {:.2f} s, on its way to ({:.6g}, {:.6g})\n",
+          l->robot, l->position.x, l->position.y, l->time.seconds(), l->goal.x, l->goal.y);
     if (const auto& f = outcome.planner_failure) {
       // The results rest on the planner's promise; a broken promise fails the run.
       throw std::runtime_error(fmt::format(

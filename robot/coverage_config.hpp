@@ -1,10 +1,12 @@
 #pragma once
 // Settings of the paper's coverage controller (Algorithms 1 and 2), with the defaults a
 // scenario file gets when it leaves them out.
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "core/sim_time.hpp"
 #include "net/channel.hpp"
@@ -47,9 +49,11 @@ enum class ProjectionPolicy {
   // Ω is known, so the controller's projection is the planner's goal from the start.
   known,
 };
-inline std::string_view to_string(ProjectionPolicy p) {
-  return p == ProjectionPolicy::known ? "known" : "discover";
-}
+// The policies by their scenario names: the one list of them.
+inline constexpr std::array<std::pair<ProjectionPolicy, std::string_view>, 2> kProjectionPolicies{
+    {{ProjectionPolicy::discover, "discover"}, {ProjectionPolicy::known, "known"}}};
+std::string_view to_string(ProjectionPolicy p);
+std::optional<ProjectionPolicy> projection_named(std::string_view name);
 
 // The robots' spacing: the side of a square of Ω's area shared out among n robots.
 double robot_spacing(const Environment& env, std::size_t n);

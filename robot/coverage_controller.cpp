@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -94,13 +95,13 @@ void CoverageController::loop1(std::uint32_t i) {
   const auto at_closest_point = [&](Vec2 goal, Vec2 closest) {
     return std::fabs(distance(r.position, goal) - distance(closest, goal)) <= tol_.position;
   };
-  const bool at_target = r.projected
-                             ? at_closest_point(r.virtual_target, r.real_target) ||
-                                   (r.status == PlanStatus::projected &&
-                                    distance(r.virtual_target, r.assigned) <= tol_.position &&
-                                    !env_.contains(r.assigned) &&
-                                    at_closest_point(r.assigned, env_.closest_point(r.assigned)))
-                             : distance(r.real_target, r.position) <= tol_.position;
+  const bool at_target =
+      r.projected ? at_closest_point(r.virtual_target, r.real_target) ||
+                        ((r.status == PlanStatus::projected || r.status == PlanStatus::reached) &&
+                         distance(r.virtual_target, r.assigned) <= tol_.position &&
+                         !env_.contains(r.assigned) &&
+                         at_closest_point(r.assigned, env_.closest_point(r.assigned)))
+                  : distance(r.real_target, r.position) <= tol_.position;
   r.stable = is_settled(r.status) && at_target && law_->at_rest(r, tol_);
   if (r.stable) return;
   // Only a target that moved (by more than the position tolerance) restarts the planner: a
@@ -108,15 +109,17 @@ void CoverageController::loop1(std::uint32_t i) {
   // only do the same again), and periodic updates cannot keep restarting a robot on its way
   // round an obstacle.
   // A robot on its way keeps its planner's state for the moved goal (Planner::move_goal).
-  const Vec2 goal = planner_goal(r);
-  if (distance(goal, r.assigned) > tol_.position) {
+  // Under either policy the virtual target decides: its projection jumps across a thin
+  // wall's midline while the target itself moves by a hair.
+  if (distance(r.virtual_target, r.assigned) > tol_.position) {
+    const Vec2 goal = planner_goal(r);
     if (is_settled(r.status)) {
       set_goal(r, goal);
     } else {
       r.planner->move_goal(goal);
       r.goal = goal;
     }
-    r.assigned = goal;
+    r.assigned = r.virtual_target;
   }
 }
 
@@ -124,6 +127,20 @@ Vec2 CoverageController::planner_goal(const Robot& r) const {
   // The virtual target, which the planner finds unreachable itself (discover), or, with Ω
   // known, its projection from the start (known).
   return config_.projection == ProjectionPolicy::known ? r.real_target : r.virtual_target;
+}
+
+double CoverageController::excursion(Vec2 p, Vec2 q) const {
+  // The stretch outside Ω runs from where the motion leaves to where it comes back (or its
+  // end); the largest distance from Ω of its points, finely sampled, is the excursion.
+  const Vec2 out = env_.advance(p, q);
+  const Vec2 back = env_.contains(q) ? env_.advance(q, p) : q;
+  constexpr int kSamples = 32;
+  double depth = 0.0;
+  for (int k = 0; k <= kSamples; ++k) {
+    const Vec2 x = out + (static_cast<double>(k) / kSamples) * (back - out);
+    depth = std::max(depth, distance(x, env_.closest_point(x)));
+  }
+  return depth;
 }
 
 void CoverageController::set_goal(Robot& r, Vec2 goal) {
@@ -143,20 +160,26 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
           "robot {}'s planner {} proposed a step of {} m at t={} s; the step length is {} m", i,
           r.planner->name(), distance(r.position, s.next), k.now().seconds(), step_));
     }
-    if (!r.planner->avoids_obstacles() && !env_.segment_inside(r.position, s.next)) {
-      // Out of Ω through ∂Ω: the run ends with the robot where it crossed.
-      const Vec2 exit = env_.advance(r.position, s.next);
-      r.path_length += distance(r.position, exit);
-      r.position = exit;
-      state_->move(Generators::positions, i, exit);
-      view_->moved(i);
-      departure_ = LeftEnvironment{i, k.now(), r.goal, exit};
-      if (observer_ != nullptr) observer_->on_motion(k.now(), r);
-      k.stop();
-      return;
+    Vec2 next = env_.advance(r.position, s.next);
+    if (!r.planner->avoids_obstacles() && !(next == s.next)) {
+      // Out of Ω through ∂Ω by more than the position tolerance: the run ends with the robot
+      // where it crossed. A graze within the tolerance (a corner cut by a micrometre) is
+      // none: the robot goes on to a motion's end in Ω, or stops at the wall.
+      if (excursion(r.position, s.next) > tol_.position) {
+        r.path_length += distance(r.position, next);
+        r.position = next;
+        state_->move(Generators::positions, i, next);
+        view_->moved(i);
+        departure_ = LeftEnvironment{i, k.now(), r.goal, next};
+        k.fingerprint().fold_state(next.x);
+        k.fingerprint().fold_state(next.y);
+        if (observer_ != nullptr) observer_->on_motion(k.now(), r);
+        k.stop();
+        return;
+      }
+      if (env_.contains(s.next)) next = s.next;
     }
-    const Vec2 next = env_.advance(r.position, s.next);
-    if (!env_.segment_inside(r.position, next)) {
+    if (r.planner->avoids_obstacles() && !env_.segment_inside(r.position, next)) {
       throw std::logic_error(
           fmt::format("robot {} left the environment at t={} s: ({}, {}) -> ({}, {})", i,
                       k.now().seconds(), r.position.x, r.position.y, next.x, next.y));
@@ -212,7 +235,7 @@ void CoverageController::check(Kernel& k) {
     // Stuck: stalled short of a target that has not moved, with the law at rest (the paper's
     // virtual generator on its target).
     const bool stuck = r.status == PlanStatus::stalled &&
-                       distance(planner_goal(r), r.assigned) <= tol_.position &&
+                       distance(r.virtual_target, r.assigned) <= tol_.position &&
                        law_->at_rest(r, tol_);
     all_resting = all_resting && (r.stable || stuck);
   }

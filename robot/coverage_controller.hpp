@@ -25,10 +25,11 @@
 // (class 6) that folds all positions into the fingerprint and stops the run when every robot
 // is stable, or (stuck) when every robot not stable has stalled short of an unchanged target.
 // A planner that stalls while its target lies outside Ω is sent to the projection instead;
-// one that reports `projected` for a goal inside Ω stops the run (planner_failure()). A
-// motion that would leave Ω stops the run where it crosses ∂Ω (left_environment()) for a
-// planner that does not avoid obstacles (the `none` baseline); for any other it is an
-// internal error: it throws.
+// one that reports `projected` for a goal inside Ω stops the run (planner_failure()). The
+// world stops a motion at the wall it would cross (Environment::advance), except for a
+// planner that does not avoid obstacles (the `none` baseline): its motion out of Ω by more
+// than the position tolerance stops the run where it crosses ∂Ω (left_environment()). A
+// motion that still leaves Ω is an internal error: it throws.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -115,6 +116,8 @@ class CoverageController {
   void loop1(std::uint32_t i);
   // The goal loop 1 hands robot r's planner under the projection policy.
   Vec2 planner_goal(const Robot& r) const;
+  // How deep a straight motion from p (in Ω) to q runs outside Ω (0 if it stays in).
+  double excursion(Vec2 p, Vec2 q) const;
   void set_goal(Robot& r, Vec2 goal);
   void loop2(Kernel& k, std::uint32_t i);
   void check(Kernel& k);

@@ -155,9 +155,12 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     const ComponentChoice choice =
         read_component(*k, coverage_law_registry(), "type", c.law.type, {"projection"});
     c.law = LawConfig{choice.type, choice.params};
-    if (auto p = k->find("projection"))
-      c.projection = p->one_of({"discover", "known"}) == "known" ? ProjectionPolicy::known
-                                                                 : ProjectionPolicy::discover;
+    if (auto p = k->find("projection")) {
+      std::vector<std::string> names;
+      for (const auto& [policy, name] : kProjectionPolicies)
+        names.emplace_back(name);
+      c.projection = *projection_named(p->one_of(names));
+    }
   }
   if (auto s = root.find("sensor")) {
     s->only_keys({"range", "period", "noise", "dropout"});
@@ -186,8 +189,11 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
   }
   if (auto v = root.find("convergence")) {
     v->only_keys({"position_tolerance", "virtual_tolerance", "spacing_tolerance", "max_time"});
-    if (auto t = v->find("position_tolerance")) c.position_tolerance = t->positive();
-    if (auto t = v->find("virtual_tolerance")) c.virtual_tolerance = t->positive();
+    // null: the default, as if absent (so that a sweep can undo a file's tolerance).
+    if (auto t = v->find("position_tolerance"); t && !t->is_null())
+      c.position_tolerance = t->positive();
+    if (auto t = v->find("virtual_tolerance"); t && !t->is_null())
+      c.virtual_tolerance = t->positive();
     if (auto t = v->find("spacing_tolerance")) {
       c.spacing_tolerance = t->positive();
       if (*c.spacing_tolerance > 1.0)

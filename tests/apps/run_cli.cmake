@@ -34,6 +34,17 @@ string(LENGTH "${fp}" fplen)
 if(NOT converged STREQUAL "ON" OR NOT nrobots EQUAL 5 OR NOT fplen EQUAL 16)
   message(FATAL_ERROR "unexpected final.json: ${final}")
 endif()
+# The paper's Fig. 2d without a planner: the robot drives out of Ω. A result, not an error:
+# exit 0, the stop reason, the incident in final.json and a line saying where.
+execute_process(COMMAND ${COVSIM} run ${SOURCE}/scenarios/fig2d.json --out ${WORK}/left
+                        --set planner.type=none --set controller.type=geodesic_lloyd
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+file(READ ${WORK}/left/final.json left)
+string(JSON reason GET "${left}" stop_reason)
+string(JSON crossed GET "${left}" left_environment position)
+if(NOT rc EQUAL 0 OR NOT reason STREQUAL "left_environment" OR NOT out MATCHES "robot 0 left Ω at")
+  message(FATAL_ERROR "a run that left Ω: exit ${rc}, ${reason}, ${crossed}: ${out}${err}")
+endif()
 file(READ ${WORK}/u/scene.svg svg)
 if(NOT svg MATCHES "^<\\?xml[^>]*>[ \n]*<svg" OR NOT svg MATCHES "</svg>[ \n]*$")
   message(FATAL_ERROR "scene.svg is not an SVG document")

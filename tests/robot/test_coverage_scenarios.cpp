@@ -218,3 +218,43 @@ TEST_CASE("settling times of a cost series", "[coverage]") {
     path += r.path_length;
   CHECK(out.path_length == path);
 }
+
+TEST_CASE("the final cost against the run's best", "[coverage]") {
+  const std::vector<std::pair<double, double>> s{{0, 10.0}, {1, 4.0}, {2, 4.5}};
+  CHECK(ratio_to_best(s, 4.5) == 4.5 / 4.0);
+  CHECK(ratio_to_best(s, 3.0) == 1.0);  // the end is the best
+  CHECK(ratio_to_best({}, 2.0) == 1.0);
+  // A run's: its final cost over the least of its metrics samples and its end.
+  struct Costs final : CoverageObserver {
+    double least = INFINITY;
+    void on_sample(SimTime, const CoverageController& c) override {
+      least = std::min(least, c.real_partition().cost());
+    }
+  } costs;
+  const CoverageOutcome out = run_coverage(paper("u_shape.json"), &costs);
+  CHECK(out.cost_to_best >= 1.0);
+  CHECK(out.cost_to_best == Approx(out.cost_real / std::min(costs.least, out.cost_real)));
+}
+
+TEST_CASE("a tolerance as a fraction of the robots' spacing ends the run by it", "[coverage]") {
+  // u_shape: 0.805 m² for 5 robots, a spacing of 0.401 m; the default tolerance is 1.4 mm.
+  Scenario s = paper("u_shape.json");
+  s.coverage.spacing_tolerance = 0.05;  // 2 cm
+  const CoverageOutcome coarse = run_coverage(s);
+  const CoverageOutcome fine = run_coverage(paper("u_shape.json"));
+  CHECK(coarse.converged);
+  CHECK(coarse.sim_time < fine.sim_time);
+  // Lloyd stopped once no target moved by 2 cm: every virtual generator lies within about
+  // that of its cell's centroid, some farther than the default's 1.4 mm.
+  const double tol = 0.05 * std::sqrt(s.environment->area() / 5.0);
+  const CellIntegrator integrator(*s.environment, *s.density);
+  std::vector<Vec2> virt;
+  for (const RobotOutcome& r : coarse.robots)
+    virt.push_back(r.virtual_generator);
+  const VoronoiPartition partition(integrator, virt);
+  double farthest = 0.0;
+  for (std::size_t i = 0; i < virt.size(); ++i)
+    farthest = std::max(farthest, distance(partition.summary(i).centroid, virt[i]));
+  CHECK(farthest <= 2 * tol);
+  CHECK(farthest > 1e-3 * s.environment->diameter());
+}
