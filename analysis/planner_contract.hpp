@@ -25,6 +25,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/geometry/vec2.hpp"
@@ -33,8 +34,15 @@
 
 namespace covsim {
 
+// Which random cases: obstacle courses (every shape, random starts and goals, reachable or
+// not), or combs (scenarios/obstacle_course's comb_course: deep dead-end gaps between the
+// robot and its goal, which is always reachable).
+enum class CaseFamily { courses, combs };
+std::string_view to_string(CaseFamily f);
+
 struct ContractSetup {
   std::string planner = "tangent_bug";
+  CaseFamily family = CaseFamily::courses;
   double range = INFINITY;   // the range sensor's range, metres
   double noise_sigma = 0.0;  // Gaussian range noise, metres
   double step = 0.05;        // metres per step
@@ -47,7 +55,7 @@ struct ContractSetup {
   // Builds the planner under test for a course (a user's own planner, say); unset: the
   // planner named `planner`, from the registry.
   std::function<std::unique_ptr<Planner>(const Environment&, const SensorSpec&)> make;
-  // A one-line description, e.g. "tangent_bug range=0.5 noise=0".
+  // A one-line description, e.g. "tangent_bug range=0.5 noise=0" (" combs" for that family).
   std::string label() const;
 };
 
@@ -92,5 +100,23 @@ struct ContractSummary {
 ContractSummary run_contract(const ContractSetup& setup, std::uint64_t seed, std::uint64_t first,
                              std::uint64_t count, unsigned jobs = 1,
                              const std::function<void(const ContractResult&)>& progress = {});
+
+// The range effect: the same cases at each sensor range. Per range, over the cases every
+// range reached with L* > 0: the mean of path / L*, and the mean and worst of the path over
+// the contact sensor's path on the same case (R = 0, which `ranges` must hold).
+struct RangePoint {
+  double range = 0.0;
+  double mean_ratio = 0.0;        // path / L*
+  double mean_vs_contact = 0.0;   // path / the contact sensor's path
+  double worst_vs_contact = 0.0;
+  std::size_t failures = 0;       // cases that broke the contract at this range
+};
+struct RangeCurve {
+  std::vector<RangePoint> points;  // in the order of `ranges`
+  std::size_t cases = 0;           // the cases the means cover
+};
+RangeCurve range_curve(const ContractSetup& setup, const std::vector<double>& ranges,
+                       std::uint64_t seed, std::uint64_t first, std::uint64_t count,
+                       unsigned jobs = 1);
 
 }  // namespace covsim

@@ -207,7 +207,6 @@ void bind_components(py::module_& m) {
             return a;
           },
           "Visible boundary pieces within range, (k, 4) rows [ax, ay, bx, by] [m].")
-      .def_property_readonly("piece_rings", [](const PyReading& s) { return s.r.piece_rings; })
       .def_property_readonly(
           "discontinuities",
           [](const PyReading& s) { return to_array(s.r.visible.discontinuities); },
@@ -217,10 +216,10 @@ void bind_components(py::module_& m) {
           [](const PyReading& s) {
             py::list out;
             for (const ContactEdge& c : s.r.contacts)
-              out.append(py::make_tuple(c.ring, to_array(c.a), to_array(c.b)));
+              out.append(py::make_tuple(to_array(c.a), to_array(c.b)));
             return out;
           },
-          "Touched boundary edges: (ring, a, b), free space on the left of a -> b.");
+          "Touched wall segments: (a, b), free space on the left of a -> b.");
   py::class_<PyRobot>(m, "Robot")
       .def_readonly("id", &PyRobot::id)
       .def_property_readonly("position", [](const PyRobot& r) { return to_array(r.position); })
