@@ -296,7 +296,8 @@ TangentBug::Decision TangentBug::follow(const SensorReading& r, double max_step)
   }
   if (c->points.size() == 1) d_followed_ = std::min(d_followed_, distance(c->points[0], goal_));
   const ReachPoint reach = reach_point(r, goal_, &*c, p_.tolerance);
-  if (reach.distance < d_followed_ - p_.progress) {
+  // The goal in sight counts even when it lies on the followed boundary (d_followed 0).
+  if (reach.distance < d_followed_ - p_.progress || reach.distance == 0.0) {
     bound_ = d_followed_;  // what every later node and leave must beat
     leave_to_ = reach.point;
     leave_length_ += distance(r.position, leave_to_);
@@ -376,8 +377,10 @@ TangentBug::Decision TangentBug::walk_on(const SensorReading& r, double max_step
   if (by_touch(r)) return walk(r, max_step, target);
   const double d = distance(x, target);
   const Vec2 u = (target - x) / d;
-  // In sight: straight there. Else on round the obstacle, as when following it.
-  if (free_ray(r, u, p_.tolerance).distance >= d - p_.tolerance - p_.noise_margin) {
+  // In sight (within range, nothing in the way): straight there. Else on round the obstacle,
+  // as when following it.
+  if (d <= r.range + p_.noise_margin &&
+      free_ray(r, u, p_.tolerance).distance >= d - p_.tolerance - p_.noise_margin) {
     heading_ = target;
     return move_toward(x, target + p_.noise_margin * u, max_step);
   }
