@@ -352,6 +352,7 @@ TangentBug::Decision TangentBug::walk_to(const SensorReading& r, std::size_t kno
   const RecordedObstacle& o = known_[known];
   obstacle_ = known;
   mode_ = mode;
+  straight_ = false;
   target_ = o.closest(goal_);
   // The shorter way round, from the recorded point nearest the robot.
   const RingPlace here = o.closest(r.position);
@@ -362,9 +363,12 @@ TangentBug::Decision TangentBug::walk_to(const SensorReading& r, std::size_t kno
 
 TangentBug::Decision TangentBug::walk_on(const SensorReading& r, double max_step) {
   const Vec2 x = r.position, target = target_.point;
-  // With noise the recorded point may lie off the wall: touching the wall near it will do.
-  if (within(x, target, p_.tolerance) ||
-      (!r.contacts.empty() && within(x, target, p_.tolerance + 2.0 * p_.noise_margin))) {
+  // With noise the recorded point may lie off the wall, by more than the noise where it is
+  // the nearest of many noisy points: near it, or touching where the straight way to it
+  // stopped, will do (the settling approach and descent, by touch, do the rest).
+  if (within(x, target, p_.tolerance + 10.0 * p_.noise_margin) ||
+      (!r.contacts.empty() && straight_)) {
+    straight_ = false;
     if (mode_ == Mode::to_projection) {
       mode_ = Mode::settle;
       return std::nullopt;
@@ -382,8 +386,10 @@ TangentBug::Decision TangentBug::walk_on(const SensorReading& r, double max_step
   if (d <= r.range + p_.noise_margin &&
       free_ray(r, u, p_.tolerance).distance >= d - p_.tolerance - p_.noise_margin) {
     heading_ = target;
+    straight_ = true;
     return move_toward(x, target + p_.noise_margin * u, max_step);
   }
+  straight_ = false;
   const std::optional<SensedChain> c = followed_chain(r);
   if (!c) return finish(x, PlanStatus::stalled);
   return chase(r, *c, max_step);

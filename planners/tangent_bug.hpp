@@ -146,6 +146,7 @@ class TangentBug final : public Planner {
   double traced_ = 0.0;             // the record's length
   std::size_t obstacle_ = 0;  // in known_: to_projection, to_closest and settle
   RingPlace target_;
+  bool straight_ = false;  // the last step went straight for target_
   std::vector<RecordedObstacle> known_;
   // Bookkeeping for the goal.
   double path_ = 0.0;
