@@ -289,6 +289,12 @@ TangentBug::Decision TangentBug::follow(const SensorReading& r, double max_step)
   const std::optional<SensedChain> c = followed_chain(r);
   if (!c) return finish(r.position, PlanStatus::stalled);  // lost sight of every wall
   if (c->closed) return loop_closed(r, RecordedObstacle(c->points, dir_, p_.tolerance));
+  // The goal on the visible followed boundary: a point in sight, whatever a touched wall
+  // grazing the way to it says.
+  if (closest_place(c->points, goal_).distance <= p_.tolerance) {
+    heading_ = goal_;
+    return move_toward(r.position, goal_, max_step);
+  }
   // d_followed: the followed boundary as sensed now.
   for (std::size_t k = 0; k + 1 < c->points.size(); ++k) {
     const Vec2 q = project_to_segment(goal_, c->points[k], c->points[k + 1]).point;
