@@ -331,8 +331,7 @@ RangeCurve range_curve(const ContractSetup& setup, const std::vector<double>& ra
     point.failures = summary.failures;
     curve.points.push_back(point);
   }
-  const std::vector<double>& by_touch =
-      paths[static_cast<std::size_t>(contact - ranges.begin())];
+  const std::vector<double>& by_touch = paths[static_cast<std::size_t>(contact - ranges.begin())];
   for (std::uint64_t i = 0; i < count; ++i) {
     bool every = true;
     for (const std::vector<double>& p : paths)

@@ -17,8 +17,9 @@
 // What a planner promises is declared in its registry entry (PlannerEntry::contract): whether
 // it is complete, its path-length bound (L* the shortest path to where it should end), and
 // parameters for the suite's courses. tangent_bug: L* + the perimeter of the obstacle followed
-// in each boundary-following episode + that of each obstacle only steered round (+ half the
-// enclosing obstacle's for a goal outside Ω), ×1.5 with range noise; grid_astar: 1.0824 L* +
+// in each boundary-following episode and the way from where it began to that obstacle +
+// that of each obstacle only steered round + every leave segment (+ half the enclosing
+// obstacle's for a goal outside Ω), ×1.5 with range noise; grid_astar: 1.0824 L* +
 // 4 h (v + 1); visibility_graph: L*.
 #include <cstdint>
 #include <functional>
@@ -106,10 +107,10 @@ ContractSummary run_contract(const ContractSetup& setup, std::uint64_t seed, std
 // the contact sensor's path on the same case (R = 0, which `ranges` must hold).
 struct RangePoint {
   double range = 0.0;
-  double mean_ratio = 0.0;        // path / L*
-  double mean_vs_contact = 0.0;   // path / the contact sensor's path
+  double mean_ratio = 0.0;       // path / L*
+  double mean_vs_contact = 0.0;  // path / the contact sensor's path
   double worst_vs_contact = 0.0;
-  std::size_t failures = 0;       // cases that broke the contract at this range
+  std::size_t failures = 0;  // cases that broke the contract at this range
 };
 struct RangeCurve {
   std::vector<RangePoint> points;  // in the order of `ranges`

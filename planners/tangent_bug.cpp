@@ -406,7 +406,8 @@ TangentBug::Decision TangentBug::settle(const SensorReading& r, double max_step)
   const FreeRay toward = free_ray(r, unit(goal_ - x), p_.tolerance);
   if (r.contacts.empty()) {
     // Short of the wall (noise): straight at the goal until touching.
-    if (toward.blocked_at) return move_toward(x, goal_, std::min(max_step, toward.distance + p_.noise_margin));
+    if (toward.blocked_at)
+      return move_toward(x, goal_, std::min(max_step, toward.distance + p_.noise_margin));
   } else {
     // Along the touched wall while the goal gets nearer: contacts are exact, so this ends at
     // the wall's point closest to the goal.

@@ -140,10 +140,10 @@ class TangentBug final : public Planner {
   bool left_start_ = false;  // the robot has been away from start_ (R = 0)
   double d_followed_ = 0.0;
   Vec2 leave_to_;
-  Vec2 head_;                       // the followed boundary's node last headed for
-  std::vector<Vec2> trace_;         // the followed boundary recorded in this episode
-  Vec2 trace_direction_;            // the boundary's direction where the record began
-  double traced_ = 0.0;             // the record's length
+  Vec2 head_;                 // the followed boundary's node last headed for
+  std::vector<Vec2> trace_;   // the followed boundary recorded in this episode
+  Vec2 trace_direction_;      // the boundary's direction where the record began
+  double traced_ = 0.0;       // the record's length
   std::size_t obstacle_ = 0;  // in known_: to_projection, to_closest and settle
   RingPlace target_;
   bool straight_ = false;  // the last step went straight for target_

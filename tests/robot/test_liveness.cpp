@@ -21,7 +21,6 @@
 using namespace covsim;
 using covsim::test::paper;
 
-
 TEST_CASE("TangentBug reaches office goals round the box and T-walls it used to give up on",
           "[liveness]") {
   const Scenario office = paper("office.json");
@@ -43,8 +42,10 @@ TEST_CASE("TangentBug reaches office goals round the box and T-walls it used to 
       CHECK(distance(run.path.back(), goal) < 1e-9);
       // Within the contract's bound: no circling.
       const double shortest = graph.shortest_path(start, goal).length;
-      const double bound = planner_registry().find("tangent_bug")->contract.path_bound(
-          PathBoundCase{*planner, env, Params{}, shortest, 0, true, 0.0});
+      const double bound =
+          planner_registry()
+              .find("tangent_bug")
+              ->contract.path_bound(PathBoundCase{*planner, env, Params{}, shortest, 0, true, 0.0});
       CHECK(run.length <= bound + 1e-6);
     }
   }
