@@ -16,6 +16,13 @@ double settling_time(const std::vector<std::pair<double, double>>& series, doubl
   return t;
 }
 
+double ratio_to_best(const std::vector<std::pair<double, double>>& series, double last) {
+  double best = last;
+  for (const auto& [t, v] : series)
+    best = std::min(best, v);
+  return best > 0.0 ? last / best : 1.0;
+}
+
 CoverageOutcome run_coverage(const Scenario& scenario, CoverageObserver* observer, TraceSink* trace,
                              const PlannerMaker& make_planner) {
   Simulation sim(scenario, std::nullopt, make_planner, trace);

@@ -32,10 +32,11 @@ struct CoverageOutcome {
   std::string scenario;  // the scenario's source (its file name)
   bool converged = false;
   SimTime sim_time;
-  // "converged", "planner_failure" (see PlannerFailure), "stuck" (see
-  // CoverageController::stuck) or "max_time".
+  // "converged", "planner_failure" (see PlannerFailure), "left_environment" (see
+  // LeftEnvironment), "stuck" (see CoverageController::stuck) or "max_time".
   std::string stop_reason;
   std::optional<PlannerFailure> planner_failure;
+  std::optional<LeftEnvironment> left_environment;
   std::uint64_t events = 0;
   std::uint64_t seed = 0;
   std::uint64_t fingerprint = 0;
@@ -48,6 +49,9 @@ struct CoverageOutcome {
   // Convergence measures: the time from which the real cost stays within 10%, 5% and 1% of
   // its final value (sampled every metrics period), and the robots' total path length.
   double time_to_10_percent = 0.0, time_to_5_percent = 0.0, time_to_1_percent = 0.0;
+  // The final real cost over the least one sampled during the run (1: it ended at its best;
+  // above 1, the last moves undid part of what was won).
+  double cost_to_best = 1.0;
   double path_length = 0.0;
   // Sums and means of the robots' failure measures.
   std::uint64_t target_outside_steps = 0;
@@ -68,6 +72,8 @@ struct CoverageOutcome {
 // The first sample time from which every later value stays within (1 + fraction) of the last
 // value: how long a cost series took to settle. 0 for an empty series.
 double settling_time(const std::vector<std::pair<double, double>>& series, double fraction);
+// `last` over the least of it and the series' values (1 for an empty series).
+double ratio_to_best(const std::vector<std::pair<double, double>>& series, double last);
 
 // Throws ScenarioError if the scenario has no robots or no seed.
 // make_planner, if given, builds each robot's planner instead of the scenario's.

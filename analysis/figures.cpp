@@ -96,7 +96,10 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
     for (const auto& cell : cell_rings(VoronoiPartition(integrator, real, split)))
       c.stroke(view.to_px({cell}), Stroke{kRealCells, 1.2 * scale, {5.0, 3.0}});
   }
-  // Paths: the virtual generator's thin and dashed, the robot's solid, in its colour.
+  c.pop_clip();
+  // Paths: the virtual generator's thin and dashed, the robot's solid, in its colour. Above
+  // the obstacles, unclipped: a walk along a wall lies on ∂Ω, where a clip to Ω would hide
+  // half of it, and a virtual generator crosses obstacles (it moves as if there were none).
   for (std::size_t i = 0; i < tracks.size(); ++i) {
     if (!drawn(i)) continue;
     const RobotTrack& k = tracks[i];
@@ -115,7 +118,6 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
     c.polyline(vp, Stroke{Colour{col.r, col.g, col.b, 0.6}, 0.8 * scale, {3.0, 2.5}});
     c.polyline(rp, Stroke{col, 1.6 * scale});
   }
-  c.pop_clip();
 
   const double mark = 4.0 * scale;
   for (std::size_t i = 0; i < state.size(); ++i) {

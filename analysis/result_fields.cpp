@@ -78,6 +78,36 @@ const FieldTable<RobotOutcome>& robot_fields() {
   return t;
 }
 
+namespace {
+// A field for an incident that stopped the run (RobotIncident): null, or its robot, time,
+// goal and position.
+Field<CoverageOutcome> incident(std::string name, std::string description,
+                                std::optional<RobotIncident> CoverageOutcome::*m) {
+  using O = CoverageOutcome;
+  return Field<O>{std::move(name),
+                  FieldKind::json,
+                  "",
+                  std::move(description),
+                  [m](const O& o) -> json {
+                    if (!(o.*m)) return nullptr;
+                    const RobotIncident& f = *(o.*m);
+                    return json{{"robot", f.robot},
+                                {"time", f.time.seconds()},
+                                {"goal", point(f.goal)},
+                                {"position", point(f.position)}};
+                  },
+                  [m](O& o, const nlohmann::json& j) {
+                    if (j.is_null()) {
+                      (o.*m).reset();
+                      return;
+                    }
+                    o.*m = RobotIncident{j.at("robot").get<std::uint32_t>(),
+                                         SimTime::from_seconds(j.at("time").get<double>()),
+                                         point(j.at("goal")), point(j.at("position"))};
+                  }};
+}
+}  // namespace
+
 const FieldTable<CoverageOutcome>& final_fields() {
   using O = CoverageOutcome;
   static const FieldTable<O> t{
@@ -138,6 +168,9 @@ const FieldTable<CoverageOutcome>& final_fields() {
              &O::time_to_5_percent),
       member("convergence.time_to_1_percent", FieldKind::number, "s", "the same within 1%",
              &O::time_to_1_percent),
+      member("convergence.cost_to_best", FieldKind::number, "",
+             "the final real cost over the least one sampled during the run (1: ended at its best)",
+             &O::cost_to_best),
       member("convergence.path_length", FieldKind::number, "m", "all robots' paths",
              &O::path_length),
       member("failures.target_outside_steps", FieldKind::integer, "",
@@ -155,28 +188,14 @@ const FieldTable<CoverageOutcome>& final_fields() {
                [](O& o, const nlohmann::json& j) {
                  o.planner_seconds = j.get<double>() * 1e-6 * static_cast<double>(o.planner_steps);
                }},
-      member("stop_reason", FieldKind::text, "", "converged, planner_failure, stuck or max_time",
-             &O::stop_reason),
-      Field<O>{"planner_failure", FieldKind::json, "",
+      member("stop_reason", FieldKind::text, "",
+             "converged, planner_failure, left_environment, stuck or max_time", &O::stop_reason),
+      incident("planner_failure",
                "null, or the robot, time, goal and position of a planner failure",
-               [](const O& o) -> json {
-                 if (!o.planner_failure) return nullptr;
-                 const PlannerFailure& f = *o.planner_failure;
-                 return json{{"robot", f.robot},
-                             {"time", f.time.seconds()},
-                             {"goal", point(f.goal)},
-                             {"position", point(f.position)}};
-               },
-               [](O& o, const nlohmann::json& j) {
-                 if (j.is_null()) {
-                   o.planner_failure.reset();
-                   return;
-                 }
-                 o.planner_failure =
-                     PlannerFailure{j.at("robot").get<std::uint32_t>(),
-                                    SimTime::from_seconds(j.at("time").get<double>()),
-                                    point(j.at("goal")), point(j.at("position"))};
-               }},
+               &O::planner_failure),
+      incident("left_environment",
+               "null, or the robot, time, goal and crossing point of a robot that drove out of Ω",
+               &O::left_environment),
       member("events", FieldKind::integer, "", "events dispatched", &O::events),
       member("seed", FieldKind::integer, "", "the run's seed", &O::seed),
       Field<O>{"provenance", FieldKind::json, "",
@@ -291,6 +310,10 @@ const FieldTable<RunMeasures>& run_fields() {
           "time_to_1_percent", FieldKind::number, "s", "settling within 1%",
           [](const O& o) { return json(o.time_to_1_percent); }, true),
       f(
+          "cost_to_best", FieldKind::number, "",
+          "the final real cost over the least sampled during the run",
+          [](const O& o) { return json(o.cost_to_best); }, true),
+      f(
           "messages_sent", FieldKind::integer, "", "link transmissions",
           [](const O& o) { return json(o.network.sent); }, false),
       f(
@@ -321,7 +344,8 @@ const FieldTable<RunMeasures>& run_fields() {
           "events", FieldKind::integer, "", "events dispatched",
           [](const O& o) { return json(o.events); }, false),
       f(
-          "stop_reason", FieldKind::text, "", "converged, planner_failure, stuck or max_time",
+          "stop_reason", FieldKind::text, "",
+          "converged, planner_failure, left_environment, stuck or max_time",
           [](const O& o) { return json(o.stop_reason); }, false),
       f(
           "target_outside_steps", FieldKind::integer, "",

@@ -151,10 +151,11 @@ void draw_frame(Canvas& c, const MapView& view, const Environment& env,
         c.stroke(view.to_px({{cell.begin(), cell.end()}}), Stroke{Colour::hex(0x1f5fbf), scale});
     }
   }
+  c.pop_clip();
+  // Trails above the obstacles: a walk along a wall lies on ∂Ω, half hidden by a clip to Ω.
   trails.advance(view, tracks, t);
   for (std::size_t i = 0; i < tracks.size(); ++i)
     c.polyline(trails.px[i], Stroke{robot_colour(i), 1.5 * scale});
-  c.pop_clip();
   for (std::size_t i = 0; i < tracks.size(); ++i) {
     const RobotTrack& k = tracks[i];
     const std::size_t now = k.at(t);

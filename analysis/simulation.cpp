@@ -120,11 +120,13 @@ CoverageOutcome Simulation::outcome() const {
   out.converged = c.converged();
   out.sim_time = kernel_->now();
   out.planner_failure = c.planner_failure();
-  out.stop_reason = !finished_            ? "running"
-                    : out.converged       ? "converged"
-                    : out.planner_failure ? "planner_failure"
-                    : c.stuck()           ? "stuck"
-                                          : "max_time";
+  out.left_environment = c.left_environment();
+  out.stop_reason = !finished_             ? "running"
+                    : out.converged        ? "converged"
+                    : out.planner_failure  ? "planner_failure"
+                    : out.left_environment ? "left_environment"
+                    : c.stuck()            ? "stuck"
+                                           : "max_time";
   out.events = kernel_->events_dispatched();
   out.seed = *scenario_.seed;
   const VoronoiPartition& last = c.real_partition();
@@ -146,6 +148,7 @@ CoverageOutcome Simulation::outcome() const {
   out.time_to_10_percent = settling_time(series, 0.10);
   out.time_to_5_percent = settling_time(series, 0.05);
   out.time_to_1_percent = settling_time(series, 0.01);
+  out.cost_to_best = ratio_to_best(series, out.cost_real);
   for (const RobotOutcome& r : out.robots) {
     out.path_length += r.path_length;
     out.target_outside_steps += r.target_outside_steps;

@@ -1,6 +1,8 @@
 #include "analysis/statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace covsim {
 
@@ -24,6 +26,11 @@ SampleSummary summarize_sample(const std::vector<double>& xs) {
   for (double x : xs)
     s.mean += x;
   s.mean /= static_cast<double>(s.n);
+  std::vector<double> sorted = xs;
+  std::sort(sorted.begin(), sorted.end());
+  s.median = quantile_sorted(sorted, 0.5);
+  s.q1 = quantile_sorted(sorted, 0.25);
+  s.q3 = quantile_sorted(sorted, 0.75);
   if (s.n < 2) return s;
   double ss = 0.0;
   for (double x : xs)
@@ -31,6 +38,38 @@ SampleSummary summarize_sample(const std::vector<double>& xs) {
   s.stddev = std::sqrt(ss / static_cast<double>(s.n - 1));
   s.ci95 = student_t_975(s.n - 1) * s.stddev / std::sqrt(static_cast<double>(s.n));
   return s;
+}
+
+double quantile_sorted(const std::vector<double>& sorted, double q) {
+  const double h = q * static_cast<double>(sorted.size() - 1);
+  const std::size_t lo = static_cast<std::size_t>(std::floor(h));
+  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
+  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
+}
+
+Modes split_modes(const std::vector<double>& xs) {
+  Modes m;
+  std::vector<double> s = xs;
+  std::sort(s.begin(), s.end());
+  const std::size_t n = s.size();
+  if (n < 4) return m;
+  std::size_t cut = 0;  // the lower mode is s[0 .. cut)
+  double gap = -1.0;
+  for (std::size_t k = 2; k + 2 <= n; ++k) {
+    if (s[k] - s[k - 1] > gap) {
+      gap = s[k] - s[k - 1];
+      cut = k;
+    }
+  }
+  const double low_range = s[cut - 1] - s[0], high_range = s[n - 1] - s[cut];
+  if (!(gap > low_range && gap > high_range)) return m;
+  m.bimodal = true;
+  m.low_fraction = static_cast<double>(cut) / static_cast<double>(n);
+  const std::vector<double> low(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(cut));
+  const std::vector<double> high(s.begin() + static_cast<std::ptrdiff_t>(cut), s.end());
+  m.low_median = quantile_sorted(low, 0.5);
+  m.high_median = quantile_sorted(high, 0.5);
+  return m;
 }
 
 }  // namespace covsim

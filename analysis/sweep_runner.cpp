@@ -371,7 +371,10 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
     out += "," + csv_quote(p);
   out += ",runs,failed,converged_rate";
   for (const std::string& m : sweep_metrics())
-    out += fmt::format(",{0}_mean,{0}_std,{0}_ci95", m);
+    out += fmt::format(
+        ",{0}_mean,{0}_std,{0}_ci95,{0}_median,{0}_q1,{0}_q3,{0}_modes,{0}_low_fraction,"
+        "{0}_low_median,{0}_high_median",
+        m);
   out += "\n";
   for (const auto& [setting, rs] : by_setting) {
     out += fmt::format("{}", setting);
@@ -398,6 +401,13 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
       out += s.n == 0   ? ",,,"
              : s.n == 1 ? fmt::format(",{},,", s.mean)
                         : fmt::format(",{},{},{}", s.mean, s.stddev, s.ci95);
+      out += s.n == 0 ? ",,," : fmt::format(",{},{},{}", s.median, s.q1, s.q3);
+      // Modes need a sample to split: two or more runs on each side.
+      const Modes modes = split_modes(xs);
+      out += s.n < 4         ? ",,,,"
+             : modes.bimodal ? fmt::format(",2,{},{},{}", modes.low_fraction, modes.low_median,
+                                           modes.high_median)
+                             : ",1,,,";
     }
     out += "\n";
   }

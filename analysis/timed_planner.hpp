@@ -24,6 +24,7 @@ class TimedPlanner final : public Planner {
   std::string_view name() const override { return inner_->name(); }
   void set_goal(Vec2 goal) override { inner_->set_goal(goal); }
   void move_goal(Vec2 goal) override { inner_->move_goal(goal); }
+  bool avoids_obstacles() const override { return inner_->avoids_obstacles(); }
   PlanStep step(const SensorReading& reading, double max_step) override {
     const auto started = std::chrono::steady_clock::now();
     const PlanStep s = inner_->step(reading, max_step);

@@ -122,6 +122,10 @@ void add_run_command(CLI::App& app) {
     fmt::print("cost: virtual {:.6g}, real {:.6g}, real in virtual partition {:.6g}\n",
                outcome.cost_virtual, outcome.cost_real, outcome.cost_real_in_virtual_partition);
     fmt::print("fingerprint {}\n", Fingerprint::to_hex(outcome.fingerprint));
+    // A result, not an error: the baseline without a planner fails as the paper says.
+    if (const auto& l = outcome.left_environment)
+      fmt::print("robot {} left Ω at ({}, {}), t = {} s, on its way to ({}, {})\n", l->robot,
+                 l->position.x, l->position.y, l->time.seconds(), l->goal.x, l->goal.y);
     if (const auto& f = outcome.planner_failure) {
       // The results rest on the planner's promise; a broken promise fails the run.
       throw std::runtime_error(fmt::format(

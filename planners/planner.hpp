@@ -34,6 +34,9 @@ class Planner {
   // small move (TangentBug's boundary-following episode) carries it over.
   virtual void move_goal(Vec2 goal) { set_goal(goal); }
   virtual PlanStep step(const SensorReading& reading, double max_step) = 0;
+  // Whether it keeps the robot in Ω. One that does not (the `none` baseline) is not stopped
+  // at walls: a motion of it that would leave Ω ends the run, which is the failure it shows.
+  virtual bool avoids_obstacles() const { return true; }
 };
 
 }  // namespace covsim

@@ -1,6 +1,7 @@
 #include "planners/planner_registry.hpp"
 
 #include "planners/grid_astar.hpp"
+#include "planners/no_planner.hpp"
 #include "planners/potential_field.hpp"
 #include "planners/straight_line.hpp"
 #include "planners/tangent_bug.hpp"
@@ -11,7 +12,7 @@ namespace covsim {
 Registry<PlannerEntry>& planner_registry() {
   static Registry<PlannerEntry> registry(
       "planner", {tangent_bug_entry(), potential_field_entry(), grid_astar_entry(),
-                  visibility_graph_entry(), straight_line_entry()});
+                  visibility_graph_entry(), straight_line_entry(), no_planner_entry()});
   return registry;
 }
 

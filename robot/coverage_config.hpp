@@ -1,6 +1,7 @@
 #pragma once
 // Settings of the paper's coverage controller (Algorithms 1 and 2), with the defaults a
 // scenario file gets when it leaves them out.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -37,8 +38,25 @@ struct NetworkConfig {
   }
 };
 
+// What the planner is told when a target lies outside Ω (Algorithm 2, lines 2-4).
+enum class ProjectionPolicy {
+  // The paper's Fig. 4: the planner is handed the virtual target and finds out that it is
+  // unreachable (TangentBug walks round the obstacle), then settles at its projection. The
+  // only choice when Ω is not known beforehand.
+  discover,
+  // Ω is known, so the controller's projection is the planner's goal from the start.
+  known,
+};
+inline std::string_view to_string(ProjectionPolicy p) {
+  return p == ProjectionPolicy::known ? "known" : "discover";
+}
+
+// The robots' spacing: the side of a square of Ω's area shared out among n robots.
+double robot_spacing(const Environment& env, std::size_t n);
+
 struct CoverageConfig {
   LawConfig law;  // the scenario's "controller": which targets loop 1 hands the planners
+  ProjectionPolicy projection = ProjectionPolicy::discover;
   LoopMode mode = LoopMode::classic;
   SimTime loop2_period = SimTime::from_ns(100'000'000);    // 0.1 s: one motion step
   SimTime loop1_period = SimTime::from_ns(1'000'000'000);  // periodic mode only
@@ -46,15 +64,20 @@ struct CoverageConfig {
   SensorConfig sensor;
   PlannerConfig planner;
   // Convergence: every robot settled at its real target (within position_tolerance) and
-  // every virtual generator within virtual_tolerance of its virtual target. Unset: 1e-3
-  // of the diameter of Ω's bounding box.
+  // every virtual generator within virtual_tolerance of its virtual target. Unset: the
+  // fraction spacing_tolerance of the robots' spacing √(area of Ω / N), so that times compare
+  // across scenarios and team sizes; without it, 1e-3 of the diameter of Ω's bounding box.
   std::optional<double> position_tolerance;
   std::optional<double> virtual_tolerance;
-  double position_tolerance_in(double diameter) const {
-    return position_tolerance.value_or(1e-3 * diameter);
+  std::optional<double> spacing_tolerance;
+  double default_tolerance(double diameter, double spacing) const {
+    return spacing_tolerance ? *spacing_tolerance * spacing : 1e-3 * diameter;
   }
-  double virtual_tolerance_in(double diameter) const {
-    return virtual_tolerance.value_or(1e-3 * diameter);
+  double position_tolerance_in(double diameter, double spacing) const {
+    return position_tolerance.value_or(default_tolerance(diameter, spacing));
+  }
+  double virtual_tolerance_in(double diameter, double spacing) const {
+    return virtual_tolerance.value_or(default_tolerance(diameter, spacing));
   }
   SimTime max_time = SimTime::from_ns(600'000'000'000);   // 600 s
   SimTime sample_period = SimTime::from_ns(500'000'000);  // metrics every 0.5 s

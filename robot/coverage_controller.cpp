@@ -17,8 +17,9 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
                                        const Density& density, const std::vector<Vec2>& starts,
                                        CoverageConfig config, const PlannerMaker& make_planner)
     : kernel_(kernel), env_(env), integrator_(env, density), config_(std::move(config)) {
-  tol_ = Tolerances{config_.position_tolerance_in(env.diameter()),
-                    config_.virtual_tolerance_in(env.diameter())};
+  const double spacing = robot_spacing(env, starts.size());
+  tol_ = Tolerances{config_.position_tolerance_in(env.diameter(), spacing),
+                    config_.virtual_tolerance_in(env.diameter(), spacing)};
   step_ = config_.max_speed * config_.loop2_period.seconds();
   const PlannerSource source =
       make_planner ? PlannerSource{}
@@ -107,15 +108,22 @@ void CoverageController::loop1(std::uint32_t i) {
   // only do the same again), and periodic updates cannot keep restarting a robot on its way
   // round an obstacle.
   // A robot on its way keeps its planner's state for the moved goal (Planner::move_goal).
-  if (distance(r.virtual_target, r.assigned) > tol_.position) {
+  const Vec2 goal = planner_goal(r);
+  if (distance(goal, r.assigned) > tol_.position) {
     if (is_settled(r.status)) {
-      set_goal(r, r.virtual_target);
+      set_goal(r, goal);
     } else {
-      r.planner->move_goal(r.virtual_target);
-      r.goal = r.virtual_target;
+      r.planner->move_goal(goal);
+      r.goal = goal;
     }
-    r.assigned = r.virtual_target;
+    r.assigned = goal;
   }
+}
+
+Vec2 CoverageController::planner_goal(const Robot& r) const {
+  // The virtual target, which the planner finds unreachable itself (discover), or, with Ω
+  // known, its projection from the start (known).
+  return config_.projection == ProjectionPolicy::known ? r.real_target : r.virtual_target;
 }
 
 void CoverageController::set_goal(Robot& r, Vec2 goal) {
@@ -134,6 +142,18 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
       throw std::runtime_error(fmt::format(
           "robot {}'s planner {} proposed a step of {} m at t={} s; the step length is {} m", i,
           r.planner->name(), distance(r.position, s.next), k.now().seconds(), step_));
+    }
+    if (!r.planner->avoids_obstacles() && !env_.segment_inside(r.position, s.next)) {
+      // Out of Ω through ∂Ω: the run ends with the robot where it crossed.
+      const Vec2 exit = env_.advance(r.position, s.next);
+      r.path_length += distance(r.position, exit);
+      r.position = exit;
+      state_->move(Generators::positions, i, exit);
+      view_->moved(i);
+      departure_ = LeftEnvironment{i, k.now(), r.goal, exit};
+      if (observer_ != nullptr) observer_->on_motion(k.now(), r);
+      k.stop();
+      return;
     }
     const Vec2 next = env_.advance(r.position, s.next);
     if (!env_.segment_inside(r.position, next)) {
@@ -192,7 +212,7 @@ void CoverageController::check(Kernel& k) {
     // Stuck: stalled short of a target that has not moved, with the law at rest (the paper's
     // virtual generator on its target).
     const bool stuck = r.status == PlanStatus::stalled &&
-                       distance(r.virtual_target, r.assigned) <= tol_.position &&
+                       distance(planner_goal(r), r.assigned) <= tol_.position &&
                        law_->at_rest(r, tol_);
     all_resting = all_resting && (r.stable || stuck);
   }

@@ -12,9 +12,11 @@
 // Loop 1 (event "loop1", class 0), for robot i once its view is ready: the law's target
 // becomes the virtual target; outside Ω (an obstacle boundary Voronoi region) the real target
 // is its projection, the closest point of Ω, else the virtual target itself. The planner is
-// handed the virtual target only when it has moved (by more than the position tolerance): a
-// goal it has reached, found unreachable or given up on is never handed to it again, and its
-// budgets are per goal. TangentBug reaches the virtual target or settles at its projection.
+// handed the virtual target (projection policy `discover`, the paper's: TangentBug reaches it
+// or finds it unreachable and settles at its projection) or the real target (`known`: Ω is
+// known, so the projection is the goal from the start), only when that goal has moved (by
+// more than the position tolerance): a goal it has reached, found unreachable or given up on
+// is never handed to it again, and its budgets are per goal.
 // Loop 2 (event "loop2", class 2, every loop2_period): a planner step toward the goal in the
 // real world, and, for a law with virtual generators, a straight step of the virtual
 // generator toward the virtual target as if there were no obstacles; both at most
@@ -24,7 +26,9 @@
 // is stable, or (stuck) when every robot not stable has stalled short of an unchanged target.
 // A planner that stalls while its target lies outside Ω is sent to the projection instead;
 // one that reports `projected` for a goal inside Ω stops the run (planner_failure()). A
-// motion that would leave Ω is an internal error: it throws.
+// motion that would leave Ω stops the run where it crosses ∂Ω (left_environment()) for a
+// planner that does not avoid obstacles (the `none` baseline); for any other it is an
+// internal error: it throws.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -41,13 +45,18 @@ namespace covsim {
 
 class CoverageController;
 
-// A planner that contradicts the environment: it declared a goal inside Ω unreachable. The
-// run stops at once (TangentBug's promise, on which the paper's Lemma 2 rests, is broken).
-struct PlannerFailure {
+// What stopped a run at once, and where: a robot, the time, its goal and its position.
+struct RobotIncident {
   std::uint32_t robot = 0;
   SimTime time;
   Vec2 goal, position;
 };
+// A planner that contradicts the environment: it declared a goal inside Ω unreachable
+// (TangentBug's promise, on which the paper's Lemma 2 rests, is broken).
+using PlannerFailure = RobotIncident;
+// A robot without a planner that avoids obstacles drove out of Ω (the paper's Fig. 2d): its
+// position is where it crossed ∂Ω.
+using LeftEnvironment = RobotIncident;
 
 // Hooks for recording a run; they read the controller's const state.
 class CoverageObserver {
@@ -75,6 +84,7 @@ class CoverageController {
   // The run stopped with robots stalled short of targets that no longer change.
   bool stuck() const { return stuck_; }
   const std::optional<PlannerFailure>& planner_failure() const { return failure_; }
+  const std::optional<LeftEnvironment>& left_environment() const { return departure_; }
 
   const std::vector<Robot>& robots() const { return robots_; }
   const CoverageConfig& config() const { return config_; }
@@ -103,6 +113,8 @@ class CoverageController {
 
  private:
   void loop1(std::uint32_t i);
+  // The goal loop 1 hands robot r's planner under the projection policy.
+  Vec2 planner_goal(const Robot& r) const;
   void set_goal(Robot& r, Vec2 goal);
   void loop2(Kernel& k, std::uint32_t i);
   void check(Kernel& k);
@@ -123,6 +135,7 @@ class CoverageController {
   bool converged_ = false;
   bool stuck_ = false;
   std::optional<PlannerFailure> failure_;
+  std::optional<LeftEnvironment> departure_;
 };
 
 }  // namespace covsim

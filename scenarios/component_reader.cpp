@@ -99,7 +99,8 @@ nlohmann::ordered_json params_to_json(const Params& p) {
 ComponentChoice read_component(const JsonValue& section,
                                const std::vector<const ComponentInfo*>& registered,
                                const std::string& kind, const std::string& type_key,
-                               const std::optional<std::string>& default_type) {
+                               const std::optional<std::string>& default_type,
+                               const std::vector<std::string>& section_keys) {
   std::vector<std::string> names;
   for (const ComponentInfo* c : registered)
     names.push_back(c->name);
@@ -128,6 +129,7 @@ ComponentChoice read_component(const JsonValue& section,
   // The section's own keys: the selected type's parameters.
   std::vector<std::string> reserved = names;
   reserved.push_back(type_key);
+  reserved.insert(reserved.end(), section_keys.begin(), section_keys.end());
   for (const auto& [key, value] : section.raw().items()) {
     if (contains(reserved, key) || find_param(selected->params, key) != nullptr) continue;
     std::string owners;

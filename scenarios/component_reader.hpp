@@ -31,20 +31,23 @@ struct ComponentChoice {
 };
 
 // The component a section selects. An absent type key takes default_type (a required key
-// when it is unset).
+// when it is unset). `section_keys` belong to the section itself, whatever the type (the
+// controller's projection policy): the caller reads them.
 ComponentChoice read_component(const JsonValue& section,
                                const std::vector<const ComponentInfo*>& registered,
                                const std::string& kind, const std::string& type_key,
-                               const std::optional<std::string>& default_type);
+                               const std::optional<std::string>& default_type,
+                               const std::vector<std::string>& section_keys = {});
 
 template <class Entry>
 ComponentChoice read_component(const JsonValue& section, const Registry<Entry>& registry,
                                const std::string& type_key,
-                               const std::optional<std::string>& default_type = std::nullopt) {
+                               const std::optional<std::string>& default_type = std::nullopt,
+                               const std::vector<std::string>& section_keys = {}) {
   std::vector<const ComponentInfo*> infos;
   for (const Entry& e : registry.entries())
     infos.push_back(&e);
-  return read_component(section, infos, registry.kind(), type_key, default_type);
+  return read_component(section, infos, registry.kind(), type_key, default_type, section_keys);
 }
 
 // A factory's ParamError as a ScenarioError at the parameter's JSON path in the section.

@@ -65,6 +65,7 @@ nlohmann::ordered_json describe_scenario(const Scenario& s) {
   if (s.seed) out["seed"] = *s.seed;
   out["planner"] = component(planner_registry(), "type", c.planner.type, c.planner.params, env);
   out["controller"] = component(coverage_law_registry(), "type", c.law.type, c.law.params, env);
+  out["controller"]["projection"] = to_string(c.projection);
   out["sensor"] = {{"range", std::isinf(c.sensor.range) ? nlohmann::ordered_json(nullptr)
                                                         : nlohmann::ordered_json(c.sensor.range)},
                    {"period", c.sensor.period ? seconds(*c.sensor.period) : nullptr},
@@ -74,8 +75,9 @@ nlohmann::ordered_json describe_scenario(const Scenario& s) {
                                {"loop2_period", seconds(c.loop2_period)}};
   if (c.mode == LoopMode::periodic) loops["loop1_period"] = seconds(c.loop1_period);
   out["loops"] = loops;
-  out["convergence"] = {{"position_tolerance", c.position_tolerance_in(env.diameter())},
-                        {"virtual_tolerance", c.virtual_tolerance_in(env.diameter())},
+  const double spacing = robot_spacing(env, s.robot_positions.size());
+  out["convergence"] = {{"position_tolerance", c.position_tolerance_in(env.diameter(), spacing)},
+                        {"virtual_tolerance", c.virtual_tolerance_in(env.diameter(), spacing)},
                         {"max_time", seconds(c.max_time)}};
   out["metrics"] = {{"period", seconds(c.sample_period)},
                     {"algebraic_connectivity_robots", c.algebraic_connectivity_robots}};

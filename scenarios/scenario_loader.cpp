@@ -152,8 +152,12 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     c.planner = PlannerConfig{choice.type, choice.params};
   }
   if (auto k = root.find("controller")) {
-    const ComponentChoice choice = read_component(*k, coverage_law_registry(), "type");
+    const ComponentChoice choice =
+        read_component(*k, coverage_law_registry(), "type", c.law.type, {"projection"});
     c.law = LawConfig{choice.type, choice.params};
+    if (auto p = k->find("projection"))
+      c.projection = p->one_of({"discover", "known"}) == "known" ? ProjectionPolicy::known
+                                                                 : ProjectionPolicy::discover;
   }
   if (auto s = root.find("sensor")) {
     s->only_keys({"range", "period", "noise", "dropout"});
@@ -181,9 +185,15 @@ void read_coverage(const JsonValue& root, CoverageConfig& c) {
     }
   }
   if (auto v = root.find("convergence")) {
-    v->only_keys({"position_tolerance", "virtual_tolerance", "max_time"});
+    v->only_keys({"position_tolerance", "virtual_tolerance", "spacing_tolerance", "max_time"});
     if (auto t = v->find("position_tolerance")) c.position_tolerance = t->positive();
     if (auto t = v->find("virtual_tolerance")) c.virtual_tolerance = t->positive();
+    if (auto t = v->find("spacing_tolerance")) {
+      c.spacing_tolerance = t->positive();
+      if (*c.spacing_tolerance > 1.0)
+        t->fail(fmt::format("expected a fraction of the robots' spacing, at most 1, found {}",
+                            *c.spacing_tolerance));
+    }
     if (auto t = v->find("max_time")) c.max_time = read_period(*t);
   }
   if (auto m = root.find("metrics")) {

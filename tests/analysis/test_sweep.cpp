@@ -58,6 +58,42 @@ TEST_CASE("summary statistics by hand", "[sweep]") {
   CHECK(summarize_sample({3.0}).ci95 == 0.0);
   CHECK(student_t_975(1) == Approx(12.706));
   CHECK(student_t_975(100) == Approx(1.984).epsilon(1e-3));
+  // Type-7 quartiles: h = q (n - 1), interpolated between the order statistics around h.
+  CHECK(s.median == 4.5);
+  CHECK(s.q1 == 4.0);
+  CHECK(s.q3 == Approx(5.5));
+  const SampleSummary odd = summarize_sample({9.0, 1.0, 3.0, 7.0, 5.0});
+  CHECK(odd.median == 5.0);
+  CHECK(odd.q1 == 3.0);
+  CHECK(odd.q3 == 7.0);
+  CHECK(summarize_sample({3.0}).median == 3.0);
+}
+
+TEST_CASE("two modes are told apart from one spread-out mode", "[sweep]") {
+  // Sixteen runs that settle near 14 s and four near 57 s: the mean (22.6 s) lies in neither.
+  std::vector<double> times;
+  for (int k = 0; k < 16; ++k)
+    times.push_back(13.5 + 0.1 * k);
+  for (double t : {55.0, 57.0, 58.5, 63.2})
+    times.push_back(t);
+  const Modes m = split_modes(times);
+  CHECK(m.bimodal);
+  CHECK(m.low_fraction == 0.8);
+  CHECK(m.low_median == Approx(14.25));
+  CHECK(m.high_median == Approx(57.75));
+  // Evenly spread values, a normal-looking sample and one straggler are one mode.
+  std::vector<double> even;
+  for (int k = 0; k < 20; ++k)
+    even.push_back(k);
+  CHECK_FALSE(split_modes(even).bimodal);
+  CHECK_FALSE(split_modes({-1.6, -0.9, -0.5, -0.2, 0.0, 0.1, 0.4, 0.7, 1.1, 1.8}).bimodal);
+  std::vector<double> straggler(times.begin(), times.begin() + 16);
+  straggler.push_back(90.0);
+  CHECK_FALSE(split_modes(straggler).bimodal);
+  // A gap no wider than one side's range is no separation.
+  CHECK_FALSE(split_modes({0.0, 1.0, 2.0, 10.0, 13.0, 20.0}).bimodal);
+  CHECK(split_modes({0.0, 1.0, 2.0, 10.0, 11.0, 12.0}).bimodal);
+  CHECK_FALSE(split_modes({1.0, 2.0, 30.0}).bimodal);  // too few to split
 }
 
 TEST_CASE("a sweep gives the same results whatever the number of jobs", "[sweep]") {

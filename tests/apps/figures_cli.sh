@@ -52,6 +52,22 @@ check_pdf u/cost.pdf
 check_svg u/scene.svg
 check_svg u/cost.svg
 grep -q "glyph" u/scene.svg || fail "scene.svg has no text"
+# Robot paths lie above the obstacles, unclipped: a walk along a wall lies on ∂Ω, where a clip
+# to Ω would hide half of it (robot 0's path: its colour #1f77b4, solid, not filled).
+"$py" - u/scene.svg <<'PY' || fail "scene.svg clips robot 0's path to Ω"
+import sys, xml.etree.ElementTree as E
+colour = "stroke:rgb(12.156863%,46.666667%,70.588235%);stroke-opacity:1;"
+found = []
+def walk(node, clipped):
+    clipped = clipped or "clip-path" in node.attrib
+    style = node.get("style", "")
+    if node.tag.endswith("path") and style.startswith("fill:none;") and colour in style:
+        found.append(clipped)
+    for child in node:
+        walk(child, clipped)
+walk(E.parse(sys.argv[1]).getroot(), False)
+assert found and not any(found), found
+PY
 "$covsim" plot u --format png --png-width 900 > /dev/null
 case "$(png_size u/scene.png)" in 900x*) ;; *) fail "scene.png is $(png_size u/scene.png), not 900 wide" ;; esac
 case "$(png_size u/cost.png)" in 900x*) ;; *) fail "cost.png is $(png_size u/cost.png), not 900 wide" ;; esac

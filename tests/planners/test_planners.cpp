@@ -226,9 +226,38 @@ TEST_CASE("every planner ends in bounded time on a goal inside an obstacle", "[p
   const Environment env = test::room_with_cup();
   for (const std::string& name : planner_registry().names()) {
     INFO(name);
+    // One that does not avoid obstacles drives into the wall; the controller ends that run
+    // (left_environment; the next test).
+    if (!make_planner(name, env)->avoids_obstacles()) continue;
     const PlannerRun run = go(env, name, {1, 2}, {2.05, 2}, 0.5);
     CHECK(run.status != PlanStatus::reached);
   }
+}
+
+TEST_CASE("without a planner the robot is sent straight through the wall", "[planners]") {
+  const Environment env = test::room_with_cup();
+  auto none = make_planner("none", env);
+  CHECK_FALSE(none->avoids_obstacles());
+  CHECK(make_planner("tangent_bug", env)->avoids_obstacles());
+  // Across the cup's bottom to a goal inside it: every step is a full one along the line,
+  // walls or not, until the goal.
+  const Vec2 start{3, 0.5}, goal{3, 2};
+  none->set_goal(goal);
+  Vec2 x = start;
+  bool crossed = false;
+  for (int k = 0; k < 1000; ++k) {
+    const PlanStep s = none->step(sense(env, x, 0.0), 0.1);
+    CHECK(std::abs(cross(s.next - start, goal - start)) < 1e-12);
+    crossed = crossed || !env.segment_inside(x, s.next);
+    x = s.next;
+    if (s.status != PlanStatus::moving) {
+      CHECK(s.status == PlanStatus::reached);
+      break;
+    }
+    CHECK(distance(x, start) == Approx(0.1 * (k + 1)));
+  }
+  CHECK(x == goal);
+  CHECK(crossed);
 }
 
 TEST_CASE("the registry knows every planner and rejects others", "[planners]") {

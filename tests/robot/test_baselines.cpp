@@ -73,6 +73,60 @@ TEST_CASE("geodesic Lloyd settles at the compromise point of Fig. 2b", "[baselin
   CHECK(out.target_outside_steps == 0);
 }
 
+TEST_CASE("geodesic Lloyd without a planner drives out of Ω on Fig. 2d", "[baseline]") {
+  // The paper's Fig. 2d: the gradient sum does not vanish at the boundary, and nothing keeps
+  // the robot in Ω. The run ends where the robot crosses ∂Ω, with the time and the goal.
+  Scenario s = paper("fig2d.json");
+  s.coverage.law = law("geodesic_lloyd");
+  s.coverage.planner.type = "none";
+  const CoverageOutcome out = run(s);
+  CHECK(out.stop_reason == "left_environment");
+  CHECK_FALSE(out.converged);
+  REQUIRE(out.left_environment);
+  const LeftEnvironment& left = *out.left_environment;
+  CHECK(left.robot == 0);
+  CHECK(left.time.seconds() > 1.0);
+  CHECK(left.time == out.sim_time);
+  // Round the L's inner corner (0.3, 0.3), onto the top of the lower arm, toward a goal
+  // beyond it, in the obstacle.
+  CHECK(left.position.y == Approx(0.3).margin(1e-9));
+  CHECK(left.position.x > 0.3);
+  CHECK(left.position.x < 0.33);
+  CHECK_FALSE(s.environment->edges_at(left.position).empty());
+  CHECK_FALSE(s.environment->contains(left.goal));
+  CHECK(out.robots[0].position == left.position);
+  // Same scenario, same incident; the paper's controller with TangentBug stays in Ω.
+  CHECK(run_coverage(s).fingerprint == out.fingerprint);
+  const CoverageOutcome paper_run = run(paper("fig2d.json"));
+  CHECK(paper_run.converged);
+  CHECK_FALSE(paper_run.left_environment);
+}
+
+TEST_CASE("geodesic Lloyd without a planner stops in front of the obstacle on Fig. 2c",
+          "[baseline]") {
+  // Fig. 2c: started on the box's axis of symmetry, facing its right side, the compromise
+  // between the ways round above and below it holds the robot in front of that side; the
+  // paper's controller sends it round to the projection of the centroid on the far side,
+  // which costs less.
+  Scenario s = paper("fig2c.json");
+  s.robot_positions = {{0.9, 0.5}};
+  s.coverage.law = law("geodesic_lloyd");
+  s.coverage.planner.type = "none";
+  const CoverageOutcome geodesic = run(s);
+  CHECK(geodesic.converged);
+  const Vec2 p = geodesic.robots[0].position;
+  INFO("final (" << p.x << ", " << p.y << ")");
+  CHECK(p.x > 0.6);
+  CHECK(p.x < 0.65);
+  CHECK(std::abs(p.y - 0.5) < 0.01);
+  Scenario method = paper("fig2c.json");
+  method.robot_positions = {{0.9, 0.5}};
+  const CoverageOutcome ours = run(method);
+  CHECK(ours.converged);
+  CHECK(distance(ours.robots[0].position, Vec2{0.42, 0.5}) < 2e-3);
+  CHECK(ours.cost_real < geodesic.cost_real);
+}
+
 TEST_CASE("Lloyd on real positions with straight-line motion gets stuck on Fig. 2c", "[baseline]") {
   Scenario s = paper("fig2c.json");
   s.coverage.law = law("euclidean_lloyd");

@@ -10,6 +10,7 @@
 #include "scenarios/json_reader.hpp"
 #include "scenarios/random_environment.hpp"
 #include "scenarios/scenario.hpp"
+#include "scenarios/scenario_description.hpp"
 #include "scenarios/scenario_error.hpp"
 
 using namespace covsim;
@@ -191,8 +192,56 @@ TEST_CASE("planners and controllers with their parameters", "[scenario]") {
   expect_error(
       "{" + kSquare + ", " + d + R"(, "controller": {"type": "geodesic_lloyd", "gain": 2}})",
       "$.controller.gain: expected a number > 0 and <= 1, found 2");
+  // Without a type the controller is the paper's, whose parameters these are not.
   expect_error("{" + kSquare + ", " + d + R"(, "controller": {"resolution": 0.1}})",
-               "$.controller: missing required key \"type\"");
+               "$.controller.resolution: \"resolution\" is not a parameter of coverage law "
+               "\"virtual_generators\"");
+}
+
+TEST_CASE("tolerances may be a fraction of the robots' spacing", "[scenario]") {
+  const std::string d = R"("density": {"type": "uniform"})";
+  // 15 m² shared by two robots: a spacing of √7.5.
+  const std::string robots = R"(, "robots": {"positions": [[0.5, 0.5], [3, 3]]})";
+  const Scenario s =
+      load_scenario(write("t1.json", "{" + kSquare + ", " + d + robots +
+                                         R"(, "convergence": {"spacing_tolerance": 0.01}})"));
+  REQUIRE(s.robot_positions.size() == 2);
+  const auto tol = describe_scenario(s)["convergence"];
+  CHECK(tol["position_tolerance"].get<double>() == Approx(0.01 * std::sqrt(7.5)).epsilon(1e-12));
+  CHECK(tol["virtual_tolerance"].get<double>() == Approx(0.01 * std::sqrt(7.5)).epsilon(1e-12));
+  // An explicit tolerance wins over the fraction.
+  const Scenario both = load_scenario(
+      write("t2.json",
+            "{" + kSquare + ", " + d + robots +
+                R"(, "convergence": {"spacing_tolerance": 0.01, "position_tolerance": 0.5}})"));
+  CHECK(describe_scenario(both)["convergence"]["position_tolerance"].get<double>() == 0.5);
+  expect_error("{" + kSquare + ", " + d + R"(, "convergence": {"spacing_tolerance": 2}})",
+               "$.convergence.spacing_tolerance: expected a fraction of the robots' spacing");
+  expect_error("{" + kSquare + ", " + d + R"(, "convergence": {"spacing_tolerance": 0}})",
+               "$.convergence.spacing_tolerance: expected a positive number");
+}
+
+TEST_CASE("the projection policy belongs to the controller section, whatever its type",
+          "[scenario]") {
+  const std::string d = R"("density": {"type": "uniform"})";
+  CHECK(load_scenario(write("p0.json", "{" + kSquare + ", " + d + "}")).coverage.projection ==
+        ProjectionPolicy::discover);
+  const Scenario known = load_scenario(
+      write("p1.json", "{" + kSquare + ", " + d + R"(, "controller": {"projection": "known"}})"));
+  CHECK(known.coverage.projection == ProjectionPolicy::known);
+  CHECK(known.coverage.law.type == "virtual_generators");
+  const Scenario geodesic = load_scenario(
+      write("p2.json", "{" + kSquare + ", " + d +
+                           R"(, "controller": {"type": "geodesic_lloyd", "projection": "known",
+                                               "gain": 0.5}})"));
+  CHECK(geodesic.coverage.projection == ProjectionPolicy::known);
+  CHECK(geodesic.coverage.law.params.number("gain") == 0.5);
+  CHECK(describe_scenario(known)["controller"]["projection"] == "known");
+  CHECK(describe_scenario(geodesic)["controller"]["projection"] == "known");
+  expect_error("{" + kSquare + ", " + d + R"(, "controller": {"projection": "guess"}})",
+               "$.controller.projection: expected one of");
+  expect_error("{" + kSquare + ", " + d + R"(, "controller": {"projection": 1}})",
+               "$.controller.projection: expected");
 }
 
 TEST_CASE("raster densities load relative to the scenario file", "[scenario]") {
