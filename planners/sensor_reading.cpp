@@ -29,7 +29,7 @@ std::vector<Vec2> discontinuities(const std::vector<SensedPiece>& pieces,
 
 SensorReading sense(const Environment& env, Vec2 p, double range) {
   SensorReading r;
-  r.position = p;
+  r.position = r.origin = p;
   r.range = range;
   r.contacts = contacts_at(env, p);
   if (!(range > 0.0)) return r;  // a contact sensor feels, it does not see

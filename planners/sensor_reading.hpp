@@ -33,6 +33,10 @@ struct SensedBoundary {
 
 struct SensorReading {
   Vec2 position;
+  // Where the range reading (visible) was taken: the position, unless the sensor reads less
+  // often than the robot moves or the last reading was lost. Its discontinuities, shadows
+  // and range describe the view from there; its pieces are walls wherever the robot stands.
+  Vec2 origin;
   double range = 0.0;  // may be infinite
   SensedBoundary visible;
   std::vector<ContactEdge> contacts;

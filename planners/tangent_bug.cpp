@@ -62,6 +62,7 @@ void TangentBug::set_goal(Vec2 goal) {
   heading_.reset();
   path_ = 0.0;
   last_position_.reset();
+  aim_.reset();
   idle_steps_ = 0;
   episodes_.clear();
   engaged_.clear();
@@ -87,6 +88,7 @@ PlanStep TangentBug::finish(Vec2 at, PlanStatus s) {
 }
 
 PlanStep TangentBug::move_toward(Vec2 x, Vec2 p, double max_step) {
+  aim_ = p;
   const double d = distance(x, p);
   return PlanStep{d <= max_step ? p : x + (max_step / d) * (p - x), PlanStatus::moving};
 }
@@ -99,16 +101,28 @@ void TangentBug::resume_motion_to_goal() {
 PlanStep TangentBug::step(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
   if (mode_ == Mode::done) return PlanStep{x, status_};
+  // A range reading taken elsewhere (the sensor reads less often than the robot steps, or
+  // the last reading was lost) shows the view from there: its discontinuities, shadows and
+  // range would mislead every test of the algorithm made from here.
+  const bool stale = !by_touch(r) && beyond(r.origin, x, p_.tolerance);
   // Bookkeeping from where the robot actually is (the world may have stopped a motion).
   if (last_position_) {
     const double moved = distance(*last_position_, x);
     path_ += moved;
-    idle_steps_ = moved > p_.tolerance ? 0 : idle_steps_ + 1;
+    // Waiting for a reading is not stalling.
+    if (moved > p_.tolerance || !stale) idle_steps_ = moved > p_.tolerance ? 0 : idle_steps_ + 1;
     if (moved > p_.tolerance) motion_ = (x - *last_position_) / moved;
   }
   last_position_ = x;
   if (path_ > p_.path_budget || idle_steps_ > kMaxIdleSteps) return finish(x, PlanStatus::stalled);
   if (distance(goal_, x) <= p_.tolerance) return finish(goal_, PlanStatus::reached);
+  // On a stale reading, on toward the point the last decision chose, from where that
+  // reading was taken (the way there was free in it); decide again on the next fresh one.
+  if (stale) {
+    if (aim_ && beyond(*aim_, x, p_.tolerance)) return move_toward(x, *aim_, max_step);
+    return PlanStep{x, PlanStatus::moving};
+  }
+  aim_.reset();
   // A mode change decides again at once; a handful always settles on a motion.
   for (int hop = 0; hop < 8; ++hop) {
     Decision d;

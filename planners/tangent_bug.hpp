@@ -151,6 +151,7 @@ class TangentBug final : public Planner {
   // Bookkeeping for the goal.
   double path_ = 0.0;
   std::optional<Vec2> last_position_;
+  std::optional<Vec2> aim_;  // where the last decision moved toward
   // The direction of the last step that moved; kept across goals, it is the robot's own.
   std::optional<Vec2> motion_;
   static constexpr int kMaxIdleSteps = 20;

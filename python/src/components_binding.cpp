@@ -192,6 +192,9 @@ void bind_components(py::module_& m) {
   py::class_<PyReading>(m, "SensorReading",
                         "What a robot's sensors give its planner at one step (docs/python.md).")
       .def_property_readonly("position", [](const PyReading& s) { return to_array(s.r.position); })
+      .def_property_readonly(
+          "origin", [](const PyReading& s) { return to_array(s.r.origin); },
+          "Where the range reading was taken [m]: the position, unless it is an older one.")
       .def_property_readonly("range", [](const PyReading& s) { return s.r.range; })
       .def_property_readonly(
           "pieces",
