@@ -8,7 +8,8 @@
 // - every proposed step is at most the step length, and (without range noise) stays in Ω;
 // - it ends within a step limit;
 // - `reached` only at the goal, `projected` only at a closest point of Ω to a goal outside
-//   Ω (the projection), never for a goal in Ω;
+//   Ω (the projection; with range noise σ, a boundary point no more than 6σ farther from the
+//   goal), never for a goal in Ω;
 // - for a planner that claims completeness: a goal in Ω is reached, a goal outside Ω ends at
 //   its projection, and the path length stays within the planner's bound (below);
 // - for the others (potential_field, straight_line): a goal not reached is reported as a

@@ -391,6 +391,7 @@ TangentBug::Decision TangentBug::walk_on(const SensorReading& r, double max_step
     straight_ = false;
     if (mode_ == Mode::to_projection) {
       mode_ = Mode::settle;
+      seeking_ = false;
       return std::nullopt;
     }
     // The way toward the goal is free here: motion to goal again, no bound from before.
@@ -423,6 +424,17 @@ TangentBug::Decision TangentBug::settle(const SensorReading& r, double max_step)
     if (toward.blocked_at)
       return move_toward(x, goal_, std::min(max_step, toward.distance + p_.noise_margin));
   } else {
+    const RecordedObstacle& o = known_[obstacle_];
+    // No nearer the goal than the record's closest point, within the noise of both: on
+    // toward it by touch, the shorter way round the record, before sliding again.
+    const double enough = distance(target_.point, goal_) + p_.noise_margin + p_.tolerance;
+    if (seeking_) {
+      if (distance(x, goal_) > enough) {
+        if (walked_ > 2.0 * o.perimeter()) return forget_record();
+        return walk(r, max_step, std::nullopt);
+      }
+      seeking_ = false;
+    }
     // Along the touched wall while the goal gets nearer: contacts are exact, so this ends at
     // the wall's point closest to the goal.
     Vec2 best = x;
@@ -437,9 +449,22 @@ TangentBug::Decision TangentBug::settle(const SensorReading& r, double max_step)
       }
     }
     if (!(best == x)) return move_toward(x, best, max_step);
-    // A touched wall faces the goal: nothing of Ω lies nearer it.
-    if (toward.distance == 0.0) return finish(x, PlanStatus::projected);
+    if (toward.distance == 0.0) {
+      // A touched wall faces the goal: nothing of Ω near lies nearer it; and nothing
+      // recorded does either, or this is only a local minimum (noise let the robot touch
+      // another face than the record's closest point: the end of a thin wall).
+      if (distance(x, goal_) <= enough) return finish(x, PlanStatus::projected);
+      const RingPlace here = o.closest(x);
+      dir_ = o.arc(here, target_, 1) <= o.arc(here, target_, -1) ? 1 : -1;
+      seeking_ = true;
+      walked_ = 0.0;
+      return walk(r, max_step, std::nullopt);
+    }
   }
+  return forget_record();
+}
+
+TangentBug::Decision TangentBug::forget_record() {
   // The record was wrong (noise): forget it, and motion to goal again.
   ++recoveries_;
   known_.erase(known_.begin() + static_cast<std::ptrdiff_t>(obstacle_));

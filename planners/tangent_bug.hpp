@@ -107,6 +107,7 @@ class TangentBug final : public Planner {
   Decision walk_to(const SensorReading& r, std::size_t known, Mode mode);
   Decision walk_on(const SensorReading& r, double max_step);
   Decision settle(const SensorReading& r, double max_step);
+  Decision forget_record();
   // The visible stretch of the followed boundary (the one through head_), its points in the
   // walking direction.
   std::optional<SensedChain> followed_chain(const SensorReading& r) const;
@@ -147,6 +148,7 @@ class TangentBug final : public Planner {
   std::size_t obstacle_ = 0;  // in known_: to_projection, to_closest and settle
   RingPlace target_;
   bool straight_ = false;  // the last step went straight for target_
+  bool seeking_ = false;   // settle: walking by touch toward target_ from a local minimum
   std::vector<RecordedObstacle> known_;
   // Bookkeeping for the goal.
   double path_ = 0.0;
