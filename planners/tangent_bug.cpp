@@ -236,7 +236,9 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 bl
     if (dir != 0 && at.segment + 1 < c.points.size())
       trace_direction_ =
           static_cast<double>(dir) * unit(c.points[at.segment + 1] - c.points[at.segment]);
-    d_followed_ = kInf;
+    // With noise, d_reach and d_followed each err by the noise: a leave must beat the last
+    // one (the bound) by the progress, so that leaves are finitely many.
+    d_followed_ = p_.noise_margin > 0.0 ? bound_ : kInf;
   }
   if (dir == 0) return finish(x, PlanStatus::stalled);  // nothing to follow
   if (chains.empty()) episodes_.push_back({x, x});
@@ -316,8 +318,9 @@ TangentBug::Decision TangentBug::follow(const SensorReading& r, double max_step)
   }
   if (c->points.size() == 1) d_followed_ = std::min(d_followed_, distance(c->points[0], goal_));
   const ReachPoint reach = reach_point(r, goal_, &*c, p_.tolerance);
-  // The goal in sight counts even when it lies on the followed boundary (d_followed 0).
-  if (reach.distance < d_followed_ - p_.progress || reach.distance == 0.0) {
+  // The goal in sight counts even when it lies on the followed boundary (d_followed 0). The
+  // reach point is sensed too: with noise it must be nearer beyond the noise of both.
+  if (reach.distance + p_.noise_margin < d_followed_ - p_.progress || reach.distance == 0.0) {
     bound_ = d_followed_;  // what every later node and leave must beat
     leave_to_ = reach.point;
     leave_length_ += distance(r.position, leave_to_);
