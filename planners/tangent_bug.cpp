@@ -75,6 +75,7 @@ void TangentBug::move_goal(Vec2 goal) {
     return set_goal(goal);
   const double shift = distance(goal, goal_);
   goal_ = goal;
+  goal_behind_wall_ = false;
   h_prev_ += shift;
   bound_ += shift;
   d_followed_ += shift;
@@ -243,6 +244,7 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 bl
   if (dir == 0) return finish(x, PlanStatus::stalled);  // nothing to follow
   if (chains.empty()) episodes_.push_back({x, x});
   mode_ = Mode::follow;
+  goal_behind_wall_ = false;
   dir_ = dir;
   start_ = x;
   walked_ = 0.0;
@@ -320,7 +322,11 @@ TangentBug::Decision TangentBug::follow(const SensorReading& r, double max_step)
   const ReachPoint reach = reach_point(r, goal_, &*c, p_.tolerance);
   // The goal in sight counts even when it lies on the followed boundary (d_followed 0). The
   // reach point is sensed too: with noise it must be nearer beyond the noise of both.
-  if (reach.distance + p_.noise_margin < d_followed_ - p_.progress || reach.distance == 0.0) {
+  const bool in_sight =
+      reach.distance == 0.0 &&
+      (!goal_behind_wall_ || free_ray(r, unit(goal_ - r.position), p_.tolerance).distance >=
+                                 distance(r.position, goal_) + p_.noise_margin);
+  if (reach.distance + p_.noise_margin < d_followed_ - p_.progress || in_sight) {
     bound_ = d_followed_;  // what every later node and leave must beat
     leave_to_ = reach.point;
     leave_length_ += distance(r.position, leave_to_);
@@ -356,6 +362,15 @@ TangentBug::Decision TangentBug::leave(const SensorReading& r, double max_step) 
   const double d = distance(x, leave_to_);
   // Arrived, or a wall the robot touches stands in the way (possible only with noise).
   if (d <= p_.tolerance || free_ray(r, (leave_to_ - x) / d, p_.tolerance).distance == 0.0) {
+    if (d > p_.tolerance && leave_to_ == goal_ && p_.noise_margin > 0.0) {
+      // The goal looked free and lies just beyond a wall: no leave after all. The episode
+      // and its record go on, the goal in sight now only with the way free past it by the
+      // margin (else the robot heads for it again from every point of the boundary and
+      // never closes the loop).
+      goal_behind_wall_ = true;
+      mode_ = Mode::follow;
+      return std::nullopt;
+    }
     resume_motion_to_goal();
     return std::nullopt;
   }
@@ -394,7 +409,7 @@ TangentBug::Decision TangentBug::walk_on(const SensorReading& r, double max_step
     straight_ = false;
     if (mode_ == Mode::to_projection) {
       mode_ = Mode::settle;
-      seeking_ = false;
+      seeking_ = sought_ = false;
       return std::nullopt;
     }
     // The way toward the goal is free here: motion to goal again, no bound from before.
@@ -428,14 +443,12 @@ TangentBug::Decision TangentBug::settle(const SensorReading& r, double max_step)
       return move_toward(x, goal_, std::min(max_step, toward.distance + p_.noise_margin));
   } else {
     const RecordedObstacle& o = known_[obstacle_];
-    // No nearer the goal than the record's closest point, within the noise of both: on
-    // toward it by touch, the shorter way round the record, before sliding again.
-    const double enough = distance(target_.point, goal_) + p_.noise_margin + p_.tolerance;
+    const double recorded = distance(target_.point, goal_);
+    const double enough = recorded + p_.noise_margin + p_.tolerance;
     if (seeking_) {
-      if (distance(x, goal_) > enough) {
-        if (walked_ > 2.0 * o.perimeter()) return forget_record();
+      // By touch toward the record's closest point, until there or as near the goal.
+      if (walked_ < seek_arc_ - p_.noise_margin && distance(x, goal_) > recorded)
         return walk(r, max_step, std::nullopt);
-      }
       seeking_ = false;
     }
     // Along the touched wall while the goal gets nearer: contacts are exact, so this ends at
@@ -453,15 +466,23 @@ TangentBug::Decision TangentBug::settle(const SensorReading& r, double max_step)
     }
     if (!(best == x)) return move_toward(x, best, max_step);
     if (toward.distance == 0.0) {
-      // A touched wall faces the goal: nothing of Ω near lies nearer it; and nothing
-      // recorded does either, or this is only a local minimum (noise let the robot touch
-      // another face than the record's closest point: the end of a thin wall).
-      if (distance(x, goal_) <= enough) return finish(x, PlanStatus::projected);
+      // A touched wall faces the goal: nothing of Ω near lies nearer it. With noise this may
+      // be a local minimum on another face than the record's closest point (the end or the
+      // far face of a wall thinner than the noise): unless it is as near the goal as that
+      // point and the record joins the two without going round anything, walk there once
+      // by touch, the shorter way round the record, and slide again.
       const RingPlace here = o.closest(x);
-      dir_ = o.arc(here, target_, 1) <= o.arc(here, target_, -1) ? 1 : -1;
-      seeking_ = true;
-      walked_ = 0.0;
-      return walk(r, max_step, std::nullopt);
+      const int way = o.arc(here, target_, 1) <= o.arc(here, target_, -1) ? 1 : -1;
+      const double arc = o.arc(here, target_, way);
+      const bool elsewhere = arc > distance(here.point, target_.point) + 2.0 * p_.noise_margin;
+      if (!sought_ && (distance(x, goal_) > enough || elsewhere)) {
+        dir_ = way;
+        seeking_ = sought_ = true;
+        seek_arc_ = arc;
+        walked_ = 0.0;
+        return walk(r, max_step, std::nullopt);
+      }
+      if (distance(x, goal_) <= enough) return finish(x, PlanStatus::projected);
     }
   }
   return forget_record();

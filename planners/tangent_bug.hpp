@@ -138,7 +138,8 @@ class TangentBug final : public Planner {
   int dir_ = 1;
   Vec2 start_;  // where the robot stood when the episode began
   double walked_ = 0.0;
-  bool left_start_ = false;  // the robot has been away from start_ (R = 0)
+  bool left_start_ = false;        // the robot has been away from start_ (R = 0)
+  bool goal_behind_wall_ = false;  // a leave for the goal in sight met a wall (noise)
   double d_followed_ = 0.0;
   Vec2 leave_to_;
   Vec2 head_;                 // the followed boundary's node last headed for
@@ -149,6 +150,8 @@ class TangentBug final : public Planner {
   RingPlace target_;
   bool straight_ = false;  // the last step went straight for target_
   bool seeking_ = false;   // settle: walking by touch toward target_ from a local minimum
+  bool sought_ = false;    // settle: that walk was made
+  double seek_arc_ = 0.0;  // its length along the record
   std::vector<RecordedObstacle> known_;
   // Bookkeeping for the goal.
   double path_ = 0.0;

@@ -6,6 +6,7 @@
 
 #include "planners/planner_run.hpp"
 #include "planners/recorded_obstacle.hpp"
+#include "planners/sensor_reading.hpp"
 #include "planners/tangent_bug.hpp"
 #include "tests/planners/test_environments.hpp"
 
@@ -245,4 +246,44 @@ TEST_CASE("A recorded obstacle encloses what lies beyond it from the robot's sid
   const RingPlace q = outer.closest({0.5, -1.0});
   CHECK(outer.arc(q, p, 1) + outer.arc(q, p, -1) == Approx(4.0));
   CHECK(outer.arc(q, p, 1) == Approx(0.75));  // counter-clockwise: right, then up
+}
+
+TEST_CASE("TangentBug decides only on readings taken where it stands", "[tangent_bug]") {
+  // A range sensor that reads every third step and loses a reading now and then, as the
+  // controller's sampled sensor does: in between, the planner gets the last reading with its
+  // own position and current contacts (the view is from where the reading was taken).
+  const Environment env = test::room_with_cup();
+  RandomStream noise(7, 0, "stale-readings");
+  for (double range : {0.1, 0.5}) {
+    for (Vec2 goal : {Vec2{2.05, 1.6}, Vec2{3.0, 1.15}, Vec2{3.0, 2.0}, Vec2{5.5, 3.5}}) {
+      INFO("range " << range << ", goal (" << goal.x << ", " << goal.y << ")");
+      TangentBugParams p = TangentBugParams::for_environment(env.diameter(), boundary_length(env));
+      p.noise_margin = p.progress = 3.0 * 0.002;
+      TangentBug bug(p);
+      bug.set_goal(goal);
+      Vec2 x{0.3, 0.3};
+      SensorReading last;
+      PlanStatus status = PlanStatus::moving;
+      for (int k = 0; k < 20000 && status == PlanStatus::moving; ++k) {
+        if (k == 0 || (k % 3 == 0 && !noise.bernoulli(0.3))) {
+          last = sense(env, x, range);
+          add_range_noise(last, noise, 0.002, env.tolerance());
+        }
+        SensorReading now = last;
+        now.position = x;
+        now.contacts = contacts_at(env, x);
+        const PlanStep s = bug.step(now, 0.02);
+        const Vec2 next = env.advance(x, s.next);
+        REQUIRE(env.segment_inside(x, next));
+        x = next;
+        status = s.status;
+      }
+      if (env.contains(goal)) {
+        CHECK(status == PlanStatus::reached);
+      } else {
+        CHECK(status == PlanStatus::projected);
+        CHECK(distance(x, goal) <= distance(env.closest_point(goal), goal) + 6.0 * 0.002);
+      }
+    }
+  }
 }
