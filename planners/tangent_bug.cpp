@@ -248,7 +248,7 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 bl
   dir_ = dir;
   start_ = x;
   walked_ = 0.0;
-  head_ = boundary;
+  head_ = anchor_ = boundary;
   trace_.assign(1, boundary);
   traced_ = 0.0;
   return std::nullopt;
@@ -262,6 +262,16 @@ std::optional<SensedChain> TangentBug::followed_chain(const SensorReading& r) co
   for (std::size_t k = 0; k < chains.size(); ++k) {
     const double d = closest_place(chains[k].points, head_).distance;
     if (d < near) near = d, best = k;
+  }
+  // The node last headed for out of sight (seen edge-on, it dropped out of its stretch, whose
+  // rest is still in sight): the stretch through the point before it, unless another passes
+  // nearer the node (else a neighbouring obstacle's stretch is taken for the followed one,
+  // and the robot circles that obstacle for ever).
+  if (near > loop_tolerance()) {
+    for (std::size_t k = 0; k < chains.size(); ++k) {
+      const double d = closest_place(chains[k].points, anchor_).distance;
+      if (d < near) near = d, best = k;
+    }
   }
   SensedChain c = std::move(chains[best]);
   if (dir_ < 0) std::reverse(c.points.begin(), c.points.end());
@@ -299,6 +309,7 @@ PlanStep TangentBug::chase(const SensorReading& r, const SensedChain& c, double 
     return PlanStep{x, PlanStatus::moving};
   }
   head_ = node;
+  anchor_ = c.points.size() > 1 ? c.points[c.points.size() - 2] : node;
   heading_ = node;
   return move_toward(x, node + p_.noise_margin * unit(node - x), max_step);
 }
@@ -395,7 +406,7 @@ TangentBug::Decision TangentBug::walk_to(const SensorReading& r, std::size_t kno
   // The shorter way round, from the recorded point nearest the robot.
   const RingPlace here = o.closest(r.position);
   dir_ = o.arc(here, target_, 1) <= o.arc(here, target_, -1) ? 1 : -1;
-  head_ = here.point;
+  head_ = anchor_ = here.point;
   return std::nullopt;
 }
 

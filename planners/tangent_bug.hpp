@@ -143,6 +143,7 @@ class TangentBug final : public Planner {
   double d_followed_ = 0.0;
   Vec2 leave_to_;
   Vec2 head_;                 // the followed boundary's node last headed for
+  Vec2 anchor_;               // the followed stretch's point before head_
   std::vector<Vec2> trace_;   // the followed boundary recorded in this episode
   Vec2 trace_direction_;      // the boundary's direction where the record began
   double traced_ = 0.0;       // the record's length
