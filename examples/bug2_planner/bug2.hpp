@@ -31,9 +31,10 @@ class Bug2 final : public covsim::Planner {
   std::optional<covsim::Vec2> line_start_;  // the m-line runs from here to the goal
   Mode mode_ = Mode::done;
   covsim::PlanStatus status_ = covsim::PlanStatus::reached;
-  std::uint32_t ring_ = 0;
   double walked_ = 0.0;
-  covsim::RingPoint target_;
+  std::vector<covsim::Vec2> walked_points_;  // its positions along the wall, the obstacle
+  std::optional<covsim::RecordedObstacle> obstacle_;
+  covsim::RingPlace target_;
 };
 
 // Its registry entry: name "bug2", no parameters.
