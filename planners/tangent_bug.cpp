@@ -237,6 +237,15 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 bl
     if (dir != 0 && at.segment + 1 < c.points.size())
       trace_direction_ =
           static_cast<double>(dir) * unit(c.points[at.segment + 1] - c.points[at.segment]);
+    if (dir == 0) {
+      // The stretch ends where the robot stands (the wall it touches, seen edge-on, shows
+      // only the point under it): along that wall, as by touch.
+      for (int d : {1, -1}) {
+        if (const auto e = walking_edge(r, d, p_.tolerance)) consider(d, d > 0 ? e->b : e->a);
+      }
+      const auto e = dir != 0 ? walking_edge(r, dir, p_.tolerance) : std::nullopt;
+      if (e) trace_direction_ = unit((dir > 0 ? e->b : e->a) - x);
+    }
     // With noise, d_reach and d_followed each err by the noise: a leave must beat the last
     // one (the bound) by the progress, so that leaves are finitely many.
     d_followed_ = p_.noise_margin > 0.0 ? bound_ : kInf;
