@@ -32,6 +32,11 @@
 //   resumes motion to goal from it (counted in `recoveries`), so a reachable goal is never
 //   declared unreachable.
 //
+// Decisions are taken only on a range reading taken where the robot stands: on a stale one
+// (the sensor reads less often than the robot steps, or a reading was lost) the robot keeps
+// on toward the point its last decision chose. With range noise σ every sensed distance
+// carries a margin of 3σ, and an unreachable goal is projected within 6σ.
+//
 // A goal that moves while the robot is on its way (move_goal) keeps the mode and the episode:
 // a robot following a wall follows on, one heading for a node heads on. Every distance to
 // the goal changes by at most the move, so h, d_followed and the bound widen by it: what was
