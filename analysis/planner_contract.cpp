@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 #include "core/geometry/environment.hpp"
@@ -33,16 +34,25 @@ struct ContractMap {
   std::unique_ptr<VisibilityGraph> graph;
   double boundary_length = 0.0;
   double narrowest = 0.0;  // passage, for planners that need a fine enough map
+  Box below, above;        // combs: where starts and goals lie
 };
 
-ContractMap make_map(std::uint64_t seed, std::uint64_t group) {
+ContractMap make_map(std::uint64_t seed, std::uint64_t group, CaseFamily family) {
   RandomStream rng(seed, group, "contract-map");
   ContractMap m;
-  m.spec.width = rng.uniform(6.0, 12.0);
-  m.spec.height = rng.uniform(6.0, 12.0);
-  m.spec.obstacles = static_cast<std::uint32_t>(3 + rng.below(7));
-  m.spec.clearance = rng.uniform(0.1, 0.3);
-  const ObstacleCourse c = obstacle_course(rng.next_u64(), m.spec);
+  ObstacleCourse c;
+  if (family == CaseFamily::combs) {
+    const CombCourse comb = comb_course(rng.next_u64());
+    c = comb.course;
+    m.below = comb.below;
+    m.above = comb.above;
+  } else {
+    m.spec.width = rng.uniform(6.0, 12.0);
+    m.spec.height = rng.uniform(6.0, 12.0);
+    m.spec.obstacles = static_cast<std::uint32_t>(3 + rng.below(7));
+    m.spec.clearance = rng.uniform(0.1, 0.3);
+    c = obstacle_course(rng.next_u64(), m.spec);
+  }
   m.env = std::make_unique<Environment>(c.outer, c.holes);
   m.narrowest = c.narrowest;
   m.graph = std::make_unique<VisibilityGraph>(*m.env);
@@ -95,13 +105,23 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
   res.seed = seed;
   res.index = index;
   res.reproducer = fmt::format(
-      "covsim planner-contract --planner {} --range {} --noise {} --step {} --seed {} --case {}",
-      setup.planner, number(setup.range), setup.noise_sigma, setup.step, seed, index);
+      "covsim planner-contract --planner {} --range {} --noise {} --step {}{} --seed {} --case {}",
+      setup.planner, number(setup.range), setup.noise_sigma, setup.step,
+      setup.family == CaseFamily::combs ? " --family combs" : "", seed, index);
   RandomStream rng(seed, index, "contract-case");
-  res.start = rng.bernoulli(0.15) ? point_on_boundary(env, map.boundary_length, rng)
-                                  : point_inside(env, rng);
-  const double kind = rng.uniform01();
-  if (kind < 0.55) {
+  const auto in_box = [&](const Box& b) {
+    return Vec2{rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
+  };
+  const double kind = setup.family == CaseFamily::combs ? 0.0 : rng.uniform01();
+  if (setup.family == CaseFamily::combs) {
+    res.start = in_box(map.below);
+  } else {
+    res.start = rng.bernoulli(0.15) ? point_on_boundary(env, map.boundary_length, rng)
+                                    : point_inside(env, rng);
+  }
+  if (setup.family == CaseFamily::combs) {
+    res.goal = in_box(map.above);
+  } else if (kind < 0.55) {
     res.goal = point_inside(env, rng);
   } else if (kind < 0.8) {
     res.goal = point_outside(env, rng).value_or(point_inside(env, rng));
@@ -177,8 +197,11 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
     fail(fmt::format("reported reached {} m from the goal", distance(x, res.goal)));
   if (res.status == PlanStatus::projected) {
     if (res.reachable) fail("declared a goal in Ω unreachable (projected)");
+    // With range noise, faces of Ω whose distances to the goal differ by less than the noise
+    // cannot be told apart (a goal inside a thin wall): a robot's recorded closest point is
+    // within 3σ of the closest distance, and it may settle within 3σ of that, so 6σ.
     const double want = distance(projection, res.goal), got = distance(x, res.goal);
-    if (std::fabs(got - want) > tol || env.edges_at(x).empty())
+    if (std::fabs(got - want) > tol + 6.0 * setup.noise_sigma || env.edges_at(x).empty())
       fail(fmt::format("projected to a point {} m from the goal; the projection is {} m away", got,
                        want));
   }
@@ -236,13 +259,18 @@ void add(ContractSummary& s, const ContractResult& r) {
 
 }  // namespace
 
+std::string_view to_string(CaseFamily f) {
+  return f == CaseFamily::combs ? "combs" : "courses";
+}
+
 std::string ContractSetup::label() const {
-  return fmt::format("{} range={} noise={}", planner, number(range), noise_sigma);
+  return fmt::format("{} range={} noise={}{}", planner, number(range), noise_sigma,
+                     family == CaseFamily::combs ? " combs" : "");
 }
 
 ContractResult run_contract_case(const ContractSetup& setup, std::uint64_t seed,
                                  std::uint64_t index) {
-  const ContractMap map = make_map(seed, index / kCasesPerMap);
+  const ContractMap map = make_map(seed, index / kCasesPerMap, setup.family);
   return run_case(setup, map, seed, index, true);
 }
 
@@ -257,7 +285,7 @@ ContractSummary run_contract(const ContractSetup& setup, std::uint64_t seed, std
   std::mutex mutex;
   const auto work = [&] {
     for (std::uint64_t g = next++; g <= last_group && count > 0; g = next++) {
-      const ContractMap map = make_map(seed, g);
+      const ContractMap map = make_map(seed, g, setup.family);
       for (std::uint64_t i = std::max(first, g * kCasesPerMap);
            i < std::min(first + count, (g + 1) * kCasesPerMap); ++i) {
         results[i - first] = run_case(setup, map, seed, i);
@@ -279,6 +307,54 @@ ContractSummary run_contract(const ContractSetup& setup, std::uint64_t seed, std
     add(s, r);
   if (s.ratio_cases > 0) s.mean_ratio /= static_cast<double>(s.ratio_cases);
   return s;
+}
+
+RangeCurve range_curve(const ContractSetup& setup, const std::vector<double>& ranges,
+                       std::uint64_t seed, std::uint64_t first, std::uint64_t count,
+                       unsigned jobs) {
+  const auto contact = std::find(ranges.begin(), ranges.end(), 0.0);
+  if (contact == ranges.end()) throw std::invalid_argument("range_curve: ranges must hold 0");
+  // Per range, per case: the path when reached with L* > 0, else NaN.
+  std::vector<std::vector<double>> paths(ranges.size(), std::vector<double>(count, NAN));
+  std::vector<double> shortest(count, NAN);
+  RangeCurve curve;
+  for (std::size_t k = 0; k < ranges.size(); ++k) {
+    ContractSetup s = setup;
+    s.range = ranges[k];
+    RangePoint point;
+    point.range = ranges[k];
+    std::mutex mutex;
+    const ContractSummary summary =
+        run_contract(s, seed, first, count, jobs, [&](const ContractResult& r) {
+          if (r.status != PlanStatus::reached || !(r.shortest > 1e-9)) return;
+          const std::lock_guard<std::mutex> lock(mutex);
+          paths[k][r.index - first] = r.length;
+          shortest[r.index - first] = r.shortest;
+        });
+    point.failures = summary.failures;
+    curve.points.push_back(point);
+  }
+  const std::vector<double>& by_touch = paths[static_cast<std::size_t>(contact - ranges.begin())];
+  for (std::uint64_t i = 0; i < count; ++i) {
+    bool every = true;
+    for (const std::vector<double>& p : paths)
+      every = every && !std::isnan(p[i]);
+    if (!every) continue;
+    ++curve.cases;
+    for (std::size_t k = 0; k < ranges.size(); ++k) {
+      RangePoint& point = curve.points[k];
+      point.mean_ratio += paths[k][i] / shortest[i];
+      const double vs = paths[k][i] / by_touch[i];
+      point.mean_vs_contact += vs;
+      point.worst_vs_contact = std::max(point.worst_vs_contact, vs);
+    }
+  }
+  for (RangePoint& point : curve.points) {
+    if (curve.cases == 0) continue;
+    point.mean_ratio /= static_cast<double>(curve.cases);
+    point.mean_vs_contact /= static_cast<double>(curve.cases);
+  }
+  return curve;
 }
 
 }  // namespace covsim

@@ -8,7 +8,8 @@
 // - every proposed step is at most the step length, and (without range noise) stays in Ω;
 // - it ends within a step limit;
 // - `reached` only at the goal, `projected` only at a closest point of Ω to a goal outside
-//   Ω (the projection), never for a goal in Ω;
+//   Ω (the projection; with range noise σ, a boundary point no more than 6σ farther from the
+//   goal), never for a goal in Ω;
 // - for a planner that claims completeness: a goal in Ω is reached, a goal outside Ω ends at
 //   its projection, and the path length stays within the planner's bound (below);
 // - for the others (potential_field, straight_line): a goal not reached is reported as a
@@ -17,14 +18,16 @@
 // What a planner promises is declared in its registry entry (PlannerEntry::contract): whether
 // it is complete, its path-length bound (L* the shortest path to where it should end), and
 // parameters for the suite's courses. tangent_bug: L* + the perimeter of the obstacle followed
-// in each boundary-following episode + that of each obstacle only steered round (+ half the
-// enclosing obstacle's for a goal outside Ω), ×1.5 with range noise; grid_astar: 1.0824 L* +
+// in each boundary-following episode and the way from where it began to that obstacle +
+// that of each obstacle only steered round + every leave segment (+ half the enclosing
+// obstacle's for a goal outside Ω), ×1.5 with range noise; grid_astar: 1.0824 L* +
 // 4 h (v + 1); visibility_graph: L*.
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/geometry/vec2.hpp"
@@ -33,8 +36,15 @@
 
 namespace covsim {
 
+// Which random cases: obstacle courses (every shape, random starts and goals, reachable or
+// not), or combs (scenarios/obstacle_course's comb_course: deep dead-end gaps between the
+// robot and its goal, which is always reachable).
+enum class CaseFamily { courses, combs };
+std::string_view to_string(CaseFamily f);
+
 struct ContractSetup {
   std::string planner = "tangent_bug";
+  CaseFamily family = CaseFamily::courses;
   double range = INFINITY;   // the range sensor's range, metres
   double noise_sigma = 0.0;  // Gaussian range noise, metres
   double step = 0.05;        // metres per step
@@ -47,7 +57,7 @@ struct ContractSetup {
   // Builds the planner under test for a course (a user's own planner, say); unset: the
   // planner named `planner`, from the registry.
   std::function<std::unique_ptr<Planner>(const Environment&, const SensorSpec&)> make;
-  // A one-line description, e.g. "tangent_bug range=0.5 noise=0".
+  // A one-line description, e.g. "tangent_bug range=0.5 noise=0" (" combs" for that family).
   std::string label() const;
 };
 
@@ -92,5 +102,23 @@ struct ContractSummary {
 ContractSummary run_contract(const ContractSetup& setup, std::uint64_t seed, std::uint64_t first,
                              std::uint64_t count, unsigned jobs = 1,
                              const std::function<void(const ContractResult&)>& progress = {});
+
+// The range effect: the same cases at each sensor range. Per range, over the cases every
+// range reached with L* > 0: the mean of path / L*, and the mean and worst of the path over
+// the contact sensor's path on the same case (R = 0, which `ranges` must hold).
+struct RangePoint {
+  double range = 0.0;
+  double mean_ratio = 0.0;       // path / L*
+  double mean_vs_contact = 0.0;  // path / the contact sensor's path
+  double worst_vs_contact = 0.0;
+  std::size_t failures = 0;  // cases that broke the contract at this range
+};
+struct RangeCurve {
+  std::vector<RangePoint> points;  // in the order of `ranges`
+  std::size_t cases = 0;           // the cases the means cover
+};
+RangeCurve range_curve(const ContractSetup& setup, const std::vector<double>& ranges,
+                       std::uint64_t seed, std::uint64_t first, std::uint64_t count,
+                       unsigned jobs = 1);
 
 }  // namespace covsim

@@ -1,12 +1,14 @@
-// `covsim planner-contract --planner NAME [--range R] [--noise S] [--cases N] [--seed N]
-// [--jobs J]`: runs the planner contract suite (analysis/planner_contract) for a soak, or
-// `--case I` for one case in detail. Prints a summary and one reproducer line per failing
+// `covsim planner-contract --planner NAME [--range R] [--noise S] [--family F] [--cases N]
+// [--seed N] [--jobs J]`: runs the planner contract suite (analysis/planner_contract) for a
+// soak, `--case I` for one case in detail, or `--ranges 0,0.5,2,inf` for the range effect
+// (the same cases at each range). Prints a summary and one reproducer line per failing
 // case; exit 1 if any case failed.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -25,6 +27,8 @@ namespace {
 struct Options {
   ContractSetup setup;
   std::string range = "inf";
+  std::string family = "courses";
+  std::string ranges;  // the range curve's ranges, comma-separated
   bool incomplete = false;
   std::uint64_t seed = 1, first = 0, cases = 1000;
   std::optional<std::uint64_t> one;
@@ -46,6 +50,10 @@ double parse_range(const std::string& s) {
     throw InputError("planner-contract: --range: expected a number >= 0 or \"inf\", got \"" + s +
                      "\"");
   return v;
+}
+
+std::string number(double v) {
+  return std::isinf(v) ? "inf" : fmt::format("{}", v);
 }
 
 nlohmann::ordered_json points(const std::vector<Vec2>& ps) {
@@ -97,6 +105,12 @@ void add_planner_contract_command(CLI::App& app) {
   cmd->add_flag("--incomplete", o->incomplete,
                 "Check only that the planner stays in Ω, ends, and reports stalls honestly, "
                 "even if its registry entry promises to reach reachable goals");
+  cmd->add_option("--family", o->family, "Cases: courses (random obstacle courses) or combs")
+      ->check(CLI::IsMember({"courses", "combs"}))
+      ->capture_default_str();
+  cmd->add_option("--ranges", o->ranges,
+                  "Comma-separated ranges (one of them 0): mean path/L* and path over the "
+                  "contact sensor's path at each, on the same cases");
   cmd->add_option("--seed", o->seed, "Seed of the suite")->capture_default_str();
   cmd->add_option("--first", o->first, "First case index")->capture_default_str();
   cmd->add_option("--cases", o->cases, "Number of cases")->capture_default_str();
@@ -115,7 +129,31 @@ void add_planner_contract_command(CLI::App& app) {
                       o->setup.planner, fmt::join(planner_registry().names(), ", ")));
     }
     o->setup.range = parse_range(o->range);
+    o->setup.family = o->family == "combs" ? CaseFamily::combs : CaseFamily::courses;
     if (o->incomplete) o->setup.complete = false;
+    if (!o->ranges.empty()) {
+      std::vector<double> ranges;
+      std::size_t at = 0;
+      while (at <= o->ranges.size()) {
+        const std::size_t comma = std::min(o->ranges.find(',', at), o->ranges.size());
+        ranges.push_back(parse_range(o->ranges.substr(at, comma - at)));
+        at = comma + 1;
+      }
+      if (std::find(ranges.begin(), ranges.end(), 0.0) == ranges.end())
+        throw InputError("planner-contract: --ranges: must hold 0 (the contact sensor)");
+      const RangeCurve curve = range_curve(o->setup, ranges, o->seed, o->first, o->cases, o->jobs);
+      std::cout << fmt::format("{} {}: {} cases reached at every range\n", o->setup.planner,
+                               to_string(o->setup.family), curve.cases);
+      std::cout << "range  path/L* mean  path/contact mean  worst  failed\n";
+      std::size_t failures = 0;
+      for (const RangePoint& p : curve.points) {
+        std::cout << fmt::format("{:<5}  {:12.4f}  {:17.4f}  {:5.3f}  {}\n", number(p.range),
+                                 p.mean_ratio, p.mean_vs_contact, p.worst_vs_contact, p.failures);
+        failures += p.failures;
+      }
+      if (failures > 0) throw std::runtime_error(fmt::format("{} cases failed", failures));
+      return;
+    }
     if (o->one) {
       const ContractResult r = run_contract_case(o->setup, o->seed, *o->one);
       print_case(r);

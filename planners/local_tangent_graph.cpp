@@ -12,6 +12,10 @@ Vec2 unit(Vec2 v) {
   const double n = norm(v);
   return n > 0.0 ? v / n : Vec2{0, 0};
 }
+double line_distance(Vec2 p, const ContactEdge& c) {
+  const double len = distance(c.a, c.b);
+  return len > 0.0 ? std::fabs(cross(c.b - c.a, p - c.a)) / len : distance(p, c.a);
+}
 }  // namespace
 
 FreeRay free_ray(const SensorReading& r, Vec2 u, double tolerance) {
@@ -27,19 +31,26 @@ FreeRay free_ray(const SensorReading& r, Vec2 u, double tolerance) {
     else if (within(c.a, x, tolerance))
       out = &c;
     else if (!left(c))
-      return FreeRay{0.0, c.ring};
+      return FreeRay{0.0, x};
   }
   if (in && out) {
     const bool convex = cross(x - in->a, out->b - x) > 0.0;
     const bool free = convex ? (left(*in) && left(*out)) : (left(*in) || left(*out));
-    if (!free) return FreeRay{0.0, in->ring};
+    if (!free) return FreeRay{0.0, x};
   } else if (in || out) {
-    const ContactEdge& c = in ? *in : *out;
-    if (!left(c)) return FreeRay{0.0, c.ring};
+    if (!left(in ? *in : *out)) return FreeRay{0.0, x};
   }
+  // A sensed piece through the robot that lies along a touched wall is that wall, judged
+  // above: it blocks only beyond the tolerance. Any other blocks however near.
+  const auto touched = [&](const SensedPiece& p) {
+    if (distance(project_to_segment(x, p.a, p.b).point, x) > tolerance) return false;
+    return std::any_of(r.contacts.begin(), r.contacts.end(), [&](const ContactEdge& c) {
+      return line_distance(p.a, c) <= tolerance && line_distance(p.b, c) <= tolerance;
+    });
+  };
   FreeRay f{kInf, std::nullopt};
-  for (std::size_t k = 0; k < r.visible.pieces.size(); ++k) {
-    const Vec2 a = r.visible.pieces[k].a, s = r.visible.pieces[k].b - a;
+  for (const SensedPiece& piece : r.visible.pieces) {
+    const Vec2 a = piece.a, s = piece.b - a;
     const double denom = cross(u, s);
     // Parallel: running along it. |s.x| + |s.y| bounds norm(s), so twice that decides the
     // test without the hypot for all but nearly parallel pieces.
@@ -48,14 +59,10 @@ FreeRay free_ray(const SensorReading& r, Vec2 u, double tolerance) {
       continue;
     const double t = cross(a - x, s) / denom;
     const double v = cross(a - x, u) / denom;
-    // A wall met within the tolerance is one the robot touches (judged above) unless it is
-    // not among the contacts: then it blocks however near.
-    const std::uint32_t edge = r.visible.pieces[k].edge;
-    const bool touching = std::any_of(r.contacts.begin(), r.contacts.end(),
-                                      [&](const ContactEdge& c) { return c.edge == edge; });
-    if (t > (touching ? tolerance : 0.0) && v >= -1e-12 && v <= 1.0 + 1e-12 && t < f.distance) {
+    if (t < f.distance && v >= -1e-12 && v <= 1.0 + 1e-12 &&
+        t > (touched(piece) ? tolerance : 0.0)) {
       f.distance = t;
-      f.blocker = r.piece_rings[k];
+      f.blocked_at = x + t * u;
     }
   }
   return f;
@@ -66,6 +73,48 @@ std::optional<ContactEdge> walking_edge(const SensorReading& r, int dir, double 
     if (distance(dir > 0 ? c.b : c.a, r.position) > tolerance) return c;
   }
   return std::nullopt;
+}
+
+std::vector<SensedChain> sensed_chains(const SensorReading& r, double tolerance) {
+  const std::vector<SensedPiece>& pieces = r.visible.pieces;
+  const std::size_t n = pieces.size();
+  std::vector<SensedChain> chains;
+  if (n == 0) return chains;
+  const auto joined = [&](std::size_t k) {  // piece k runs on into piece k + 1
+    return within(pieces[k].b, pieces[(k + 1) % n].a, tolerance);
+  };
+  // Chains start after a jump; with none, the whole boundary is one closed chain.
+  std::size_t first = n;
+  for (std::size_t k = 0; k < n && first == n; ++k) {
+    if (!joined((k + n - 1) % n)) first = k;
+  }
+  const bool closed = first == n;
+  if (closed) first = 0;
+  for (std::size_t done = 0; done < n;) {
+    SensedChain c;
+    c.first_piece = (first + done) % n;
+    c.closed = closed;
+    c.points.push_back(pieces[c.first_piece].a);
+    do {
+      const SensedPiece& p = pieces[(first + done) % n];
+      if (beyond(p.b, c.points.back(), tolerance)) c.points.push_back(p.b);
+      ++c.piece_count;
+      ++done;
+    } while (done < n && joined((first + done + n - 1) % n));
+    chains.push_back(std::move(c));
+  }
+  return chains;
+}
+
+PolylinePlace closest_place(const std::vector<Vec2>& points, Vec2 p) {
+  PolylinePlace best{0, points.empty() ? p : points.front(), kInf};
+  if (points.size() == 1) best.distance = distance(p, points.front());
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    const Vec2 q = project_to_segment(p, points[k], points[k + 1]).point;
+    const double d = distance(q, p);
+    if (d < best.distance) best = {k, q, d};
+  }
+  return best;
 }
 
 std::vector<TangentNode> tangent_nodes(const SensorReading& r, Vec2 goal, double bound,
@@ -80,16 +129,14 @@ std::vector<TangentNode> tangent_nodes(const SensorReading& r, Vec2 goal, double
     if (f.distance > 0.0 && f.distance >= std::min(r.range, dg) - tolerance)
       nodes.push_back(TangentNode{goal, dg, true});
   }
-  for (std::size_t k = 0; k < r.visible.discontinuities.size(); ++k) {
-    const Vec2 o = r.visible.discontinuities[k];
+  for (Vec2 o : r.visible.discontinuities) {
     const double dx = distance(o, x), dgo = distance(o, goal);
-    if (dx > tolerance && dgo < bound)
-      nodes.push_back(TangentNode{o, dx + dgo, false, r.discontinuity_rings[k]});
+    if (dx > tolerance && dgo < bound) nodes.push_back(TangentNode{o, dx + dgo, false});
   }
   return nodes;
 }
 
-ReachPoint reach_point(const SensorReading& r, Vec2 goal, std::uint32_t followed,
+ReachPoint reach_point(const SensorReading& r, Vec2 goal, const SensedChain* followed,
                        double tolerance) {
   ReachPoint best{r.position, kInf};
   const auto consider = [&](Vec2 p) {
@@ -119,8 +166,9 @@ ReachPoint reach_point(const SensorReading& r, Vec2 goal, std::uint32_t followed
     if (std::fabs(cross(a, b)) <= 1e-9 && dot(a, b) > 0.0)
       consider(project_to_segment(goal, o[k], o[k + 1]).point);
   }
-  for (std::size_t k = 0; k < r.visible.pieces.size(); ++k) {
-    if (r.piece_rings[k] == followed) continue;
+  const std::size_t n = r.visible.pieces.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (followed != nullptr && followed->holds_piece(k, n)) continue;
     consider(project_to_segment(goal, r.visible.pieces[k].a, r.visible.pieces[k].b).point);
   }
   return best;

@@ -4,41 +4,69 @@
 
 namespace covsim {
 
+namespace {
+// The jumps of the visible boundary, as visible_boundary finds them: after piece k when its
+// end is not piece k + 1's start (cyclically).
+std::vector<bool> jumps(const std::vector<SensedPiece>& pieces, double tolerance) {
+  const std::size_t n = pieces.size();
+  std::vector<bool> out(n, false);
+  for (std::size_t k = 0; k < n; ++k)
+    out[k] = beyond(pieces[k].b, pieces[(k + 1) % n].a, tolerance);
+  return out;
+}
+
+std::vector<Vec2> discontinuities(const std::vector<SensedPiece>& pieces,
+                                  const std::vector<bool>& jump) {
+  std::vector<Vec2> out;
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    if (!jump[k]) continue;
+    out.push_back(pieces[k].b);
+    out.push_back(pieces[(k + 1) % pieces.size()].a);
+  }
+  return out;
+}
+}  // namespace
+
 SensorReading sense(const Environment& env, Vec2 p, double range) {
   SensorReading r;
-  r.position = p;
+  r.position = r.origin = p;
   r.range = range;
-  r.visible = visible_boundary(env, p, range);
-  for (const VisiblePiece& piece : r.visible.pieces)
-    r.piece_rings.push_back(env.boundary()[piece.edge].ring);
-  for (std::uint32_t e : r.visible.discontinuity_edges)
-    r.discontinuity_rings.push_back(env.boundary()[e].ring);
   r.contacts = contacts_at(env, p);
+  if (!(range > 0.0)) return r;  // a contact sensor feels, it does not see
+  const VisibleBoundary v = visible_boundary(env, p, range);
+  r.visible.pieces.reserve(v.pieces.size());
+  for (const VisiblePiece& piece : v.pieces)
+    r.visible.pieces.push_back(SensedPiece{piece.a, piece.b});
+  r.visible.discontinuities = v.discontinuities;
   return r;
 }
 
 std::vector<ContactEdge> contacts_at(const Environment& env, Vec2 p) {
   std::vector<ContactEdge> out;
-  for (std::uint32_t e : env.edges_at(p)) {
-    const BoundaryEdge& be = env.boundary()[e];
-    out.push_back(ContactEdge{e, be.ring, be.index, be.a, be.b});
-  }
+  for (std::uint32_t e : env.edges_at(p))
+    out.push_back(ContactEdge{env.boundary()[e].a, env.boundary()[e].b});
   return out;
 }
 
 void add_range_noise(SensorReading& r, RandomStream& rng, double sigma, double tolerance) {
-  const auto jitter = [&](Vec2& q) {
+  if (sigma <= 0.0) return;
+  std::vector<SensedPiece>& pieces = r.visible.pieces;
+  const std::vector<bool> jump = jumps(pieces, tolerance);
+  const auto jitter = [&](Vec2 q) {
     const Vec2 d = q - r.position;
     const double n = norm(d);
-    if (n <= tolerance) return;
-    q = r.position + (std::max(0.0, n + rng.normal(0.0, sigma)) / n) * d;
+    if (n <= tolerance) return q;
+    return r.position + (std::max(0.0, n + rng.normal(0.0, sigma)) / n) * d;
   };
-  for (VisiblePiece& piece : r.visible.pieces) {
-    jitter(piece.a);
-    jitter(piece.b);
+  const std::size_t n = pieces.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    // A start joined to the previous piece's end is measured with it.
+    if (jump[(k + n - 1) % n]) pieces[k].a = jitter(pieces[k].a);
+    pieces[k].b = jitter(pieces[k].b);
+    if (k + 1 < n && !jump[k]) pieces[k + 1].a = pieces[k].b;
   }
-  for (Vec2& o : r.visible.discontinuities)
-    jitter(o);
+  if (n > 1 && !jump[n - 1]) pieces[0].a = pieces[n - 1].b;
+  r.visible.discontinuities = discontinuities(pieces, jump);
 }
 
 }  // namespace covsim

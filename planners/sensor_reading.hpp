@@ -1,7 +1,9 @@
 #pragma once
-// What a robot's sensors give a planner at one instant: the part of ∂Ω visible within the
-// sensing range, and the boundary edges it touches (a contact sensor feels the wall's
-// direction, which is how a robot with range 0 follows a wall).
+// What a robot's sensors give a planner at one instant, and only what they measure: the part
+// of ∂Ω visible within the sensing range, as points and segments, and the wall segments the
+// robot touches (a contact sensor feels a wall's direction, which is how a robot with range
+// 0 follows a wall). No obstacle, ring or edge ids: which sensed points belong to one
+// obstacle is for the planner to infer from geometry.
 #include <vector>
 
 #include "core/geometry/visibility.hpp"
@@ -9,22 +11,35 @@
 
 namespace covsim {
 
+// A touched wall segment, free space on the left of a -> b.
 struct ContactEdge {
-  std::uint32_t edge;   // boundary edge id
-  std::uint32_t ring;   // which obstacle (0: the outer boundary, h + 1: hole h)
-  std::uint32_t index;  // the edge's place in its ring, in the ring's direction
-  Vec2 a, b;            // free space on the left of a -> b
+  Vec2 a, b;
+};
+
+// A visible stretch of one wall, a -> b counter-clockwise as seen from the robot (so free
+// space is on its left, the robot's side).
+struct SensedPiece {
+  Vec2 a, b;
+};
+
+struct SensedBoundary {
+  // In counter-clockwise order of direction from the robot. Consecutive pieces whose ends
+  // coincide (the last and the first included) are one continuous stretch of boundary.
+  std::vector<SensedPiece> pieces;
+  // Where the visible boundary jumps: a piece's end that is not the next piece's start
+  // (an occluding vertex, the point behind it, or where a wall leaves the sensing range).
+  std::vector<Vec2> discontinuities;
 };
 
 struct SensorReading {
   Vec2 position;
+  // Where the range reading (visible) was taken: the position, unless the sensor reads less
+  // often than the robot moves or the last reading was lost. Its discontinuities, shadows
+  // and range describe the view from there; its pieces are walls wherever the robot stands.
+  Vec2 origin;
   double range = 0.0;  // may be infinite
-  VisibleBoundary visible;
+  SensedBoundary visible;
   std::vector<ContactEdge> contacts;
-  // Which obstacle each visible piece, and each discontinuity point, belongs to (parallel to
-  // visible.pieces and visible.discontinuities).
-  std::vector<std::uint32_t> piece_rings;
-  std::vector<std::uint32_t> discontinuity_rings;
 };
 
 // A reading taken in the environment at p: what an ideal range and contact sensor report.
@@ -33,9 +48,11 @@ SensorReading sense(const Environment& env, Vec2 p, double range);
 // The boundary edges touching p (what a contact sensor reports).
 std::vector<ContactEdge> contacts_at(const Environment& env, Vec2 p);
 
-// Gaussian range noise: every sensed point (piece ends, discontinuity points) farther than
-// `tolerance` from the robot moves along its ray from the robot by N(0, sigma²), never
-// closer than the robot itself. Contacts are left alone.
+// Gaussian range noise: every sensed point farther than `tolerance` from the robot moves
+// along its ray from the robot by N(0, sigma²), never closer than the robot itself. A point
+// shared by two joined pieces is one measurement and moves once, so the continuity of the
+// visible boundary survives the noise; the discontinuities are the noisy pieces' ends.
+// Contacts are left alone.
 void add_range_noise(SensorReading& r, RandomStream& rng, double sigma, double tolerance);
 
 }  // namespace covsim

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "core/geometry/environment.hpp"
-#include "planners/local_tangent_graph.hpp"
 
 namespace covsim {
 
@@ -34,8 +33,6 @@ std::string_view to_string(TangentBug::Mode m) {
   switch (m) {
     case TangentBug::Mode::motion_to_goal:
       return "motion_to_goal";
-    case TangentBug::Mode::approach:
-      return "approach";
     case TangentBug::Mode::follow:
       return "follow";
     case TangentBug::Mode::leave:
@@ -44,6 +41,8 @@ std::string_view to_string(TangentBug::Mode m) {
       return "to_projection";
     case TangentBug::Mode::to_closest:
       return "to_closest";
+    case TangentBug::Mode::settle:
+      return "settle";
     case TangentBug::Mode::done:
       return "done";
   }
@@ -63,6 +62,7 @@ void TangentBug::set_goal(Vec2 goal) {
   heading_.reset();
   path_ = 0.0;
   last_position_.reset();
+  aim_.reset();
   idle_steps_ = 0;
   episodes_.clear();
   engaged_.clear();
@@ -71,17 +71,15 @@ void TangentBug::set_goal(Vec2 goal) {
 }
 
 void TangentBug::move_goal(Vec2 goal) {
-  if (mode_ == Mode::done || mode_ == Mode::to_projection) return set_goal(goal);
+  if (mode_ == Mode::done || mode_ == Mode::to_projection || mode_ == Mode::settle)
+    return set_goal(goal);
   const double shift = distance(goal, goal_);
   goal_ = goal;
+  goal_behind_wall_ = false;
   h_prev_ += shift;
   bound_ += shift;
   d_followed_ += shift;
   idle_steps_ = 0;
-  // A leave stays committed to its point (turned into motion toward the moved goal, it can
-  // meet the wall it left and walk round it again); an approach heads for the goal as it is
-  // now, so that the wall it meets is followed the way the robot was going.
-  if (mode_ == Mode::approach) heading_ = goal_;
 }
 
 PlanStep TangentBug::finish(Vec2 at, PlanStatus s) {
@@ -91,6 +89,7 @@ PlanStep TangentBug::finish(Vec2 at, PlanStatus s) {
 }
 
 PlanStep TangentBug::move_toward(Vec2 x, Vec2 p, double max_step) {
+  aim_ = p;
   const double d = distance(x, p);
   return PlanStep{d <= max_step ? p : x + (max_step / d) * (p - x), PlanStatus::moving};
 }
@@ -103,18 +102,28 @@ void TangentBug::resume_motion_to_goal() {
 PlanStep TangentBug::step(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
   if (mode_ == Mode::done) return PlanStep{x, status_};
+  // A range reading taken elsewhere (the sensor reads less often than the robot steps, or
+  // the last reading was lost) shows the view from there: its discontinuities, shadows and
+  // range would mislead every test of the algorithm made from here.
+  const bool stale = !by_touch(r) && beyond(r.origin, x, p_.tolerance);
   // Bookkeeping from where the robot actually is (the world may have stopped a motion).
   if (last_position_) {
     const double moved = distance(*last_position_, x);
     path_ += moved;
-    idle_steps_ = moved > p_.tolerance ? 0 : idle_steps_ + 1;
+    // Waiting for a reading is not stalling.
+    if (moved > p_.tolerance || !stale) idle_steps_ = moved > p_.tolerance ? 0 : idle_steps_ + 1;
     if (moved > p_.tolerance) motion_ = (x - *last_position_) / moved;
   }
   last_position_ = x;
   if (path_ > p_.path_budget || idle_steps_ > kMaxIdleSteps) return finish(x, PlanStatus::stalled);
-  for (const ContactEdge& c : r.contacts)
-    memory_.remember(c);
   if (distance(goal_, x) <= p_.tolerance) return finish(goal_, PlanStatus::reached);
+  // On a stale reading, on toward the point the last decision chose, from where that
+  // reading was taken (the way there was free in it); decide again on the next fresh one.
+  if (stale) {
+    if (aim_ && beyond(*aim_, x, p_.tolerance)) return move_toward(x, *aim_, max_step);
+    return PlanStep{x, PlanStatus::moving};
+  }
+  aim_.reset();
   // A mode change decides again at once; a handful always settles on a motion.
   for (int hop = 0; hop < 8; ++hop) {
     Decision d;
@@ -122,11 +131,8 @@ PlanStep TangentBug::step(const SensorReading& r, double max_step) {
       case Mode::motion_to_goal:
         d = motion_to_goal(r, max_step);
         break;
-      case Mode::approach:
-        d = approach(r, max_step);
-        break;
       case Mode::follow:
-        d = follow(r, max_step);
+        d = by_touch(r) ? follow_by_touch(r, max_step) : follow(r, max_step);
         break;
       case Mode::leave:
         d = leave(r, max_step);
@@ -134,6 +140,9 @@ PlanStep TangentBug::step(const SensorReading& r, double max_step) {
       case Mode::to_projection:
       case Mode::to_closest:
         d = walk_on(r, max_step);
+        break;
+      case Mode::settle:
+        d = settle(r, max_step);
         break;
       case Mode::done:
         return PlanStep{x, status_};
@@ -145,10 +154,12 @@ PlanStep TangentBug::step(const SensorReading& r, double max_step) {
 
 TangentBug::Decision TangentBug::motion_to_goal(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
-  // Touching an obstacle walked round before that encloses the goal: project at once.
-  for (const ContactEdge& c : r.contacts) {
-    if (memory_.complete(c.ring) && memory_.encloses(c.ring, goal_))
-      return walk_to(r, c.ring, Mode::to_projection);
+  // Touching an obstacle gone round before that encloses the goal: project at once.
+  if (!r.contacts.empty()) {
+    for (std::size_t k = 0; k < known_.size(); ++k) {
+      if (known_[k].on_boundary(x, loop_tolerance()) && known_[k].encloses(goal_))
+        return walk_to(r, k, Mode::to_projection);
+    }
   }
   const std::vector<TangentNode> nodes =
       tangent_nodes(r, goal_, bound_ - p_.progress, p_.tolerance);
@@ -161,43 +172,35 @@ TangentBug::Decision TangentBug::motion_to_goal(const SensorReading& r, double m
   if (best != nullptr && best->heuristic <= h_prev_ + p_.tolerance) {
     h_prev_ = best->heuristic;
     heading_ = best->point;
-    if (!best->is_goal) engage(best->ring);
+    if (!best->is_goal && (engaged_.empty() || beyond(engaged_.back(), best->point, p_.tolerance)))
+      engaged_.push_back(best->point);
     return move_toward(x, best->point, max_step);
   }
-  // A local minimum: follow the obstacle in the way, touching it first.
+  // A local minimum: follow the boundary in the way.
   const FreeRay f = free_ray(r, unit(goal_ - x), p_.tolerance);
-  if (f.distance == 0.0) return begin_following(r, *f.blocker);
-  mode_ = Mode::approach;
+  if (f.blocked_at) return begin_following(r, *f.blocked_at);
+  // Nothing sensed in the way, yet no node: cannot happen (the goal is a node then), but
+  // head for the goal rather than stand still.
   heading_ = goal_;
-  return std::nullopt;
+  return move_toward(x, goal_, std::min(max_step, f.distance));
 }
 
-TangentBug::Decision TangentBug::approach(const SensorReading& r, double max_step) {
+TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 blocked_at) {
   const Vec2 x = r.position;
-  // Straight toward the goal until a wall the robot touches faces it: up to the sensed wall,
-  // and past it by the noise margin, so that a sensed point that noise put short of the wall
-  // does not hold the robot up (the world stops a motion at the wall).
-  const FreeRay f = free_ray(r, unit(goal_ - x), p_.tolerance);
-  if (f.distance == 0.0) return begin_following(r, *f.blocker);
-  return move_toward(x, goal_, std::min(max_step, f.distance + p_.noise_margin));
-}
-
-TangentBug::Decision TangentBug::begin_following(const SensorReading& r, std::uint32_t ring) {
-  const Vec2 x = r.position;
-  if (memory_.complete(ring) && memory_.encloses(ring, goal_))
-    return walk_to(r, ring, Mode::to_projection);
+  for (std::size_t k = 0; k < known_.size(); ++k) {
+    if (known_[k].on_boundary(blocked_at, loop_tolerance()) && known_[k].encloses(goal_))
+      return walk_to(r, k, Mode::to_projection);
+  }
   // The direction that continues the motion (Kamon et al.): toward the point last headed
   // for while it lies ahead; standing on it, the direction of the last step that moved;
   // only a robot that has never moved takes the goal's. Between two equally good ones, the
-  // one whose edge ends nearer the goal.
+  // one whose end lies nearer the goal.
   const bool ahead = heading_ && distance(*heading_, x) > p_.tolerance;
   const Vec2 ref = ahead ? unit(*heading_ - x) : motion_ ? *motion_ : unit(goal_ - x);
   int dir = 0;
   double best_score = -kInf, best_end = kInf;
-  for (int d : {1, -1}) {
-    const auto e = walking_edge(r, d, p_.tolerance);
-    if (!e) continue;
-    const Vec2 end = d > 0 ? e->b : e->a;
+  const auto consider = [&](int d, Vec2 end) {
+    if (distance(end, x) <= p_.tolerance) return;
     const double score = dot(unit(end - x), ref), to_goal = distance(end, goal_);
     if (score > best_score + 1e-9 ||
         (std::fabs(score - best_score) <= 1e-9 && to_goal < best_end)) {
@@ -205,44 +208,172 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, std::ui
       best_end = to_goal;
       dir = d;
     }
+  };
+  Vec2 boundary = x;
+  std::vector<SensedChain> chains;
+  if (!by_touch(r)) chains = sensed_chains(r, p_.tolerance);
+  if (chains.empty()) {
+    // Touching, with nothing seen: along the wall, to the touched edge's end either way.
+    for (int d : {1, -1}) {
+      if (const auto e = walking_edge(r, d, p_.tolerance)) consider(d, d > 0 ? e->b : e->a);
+    }
+    d_followed_ = distance(x, goal_);
+  } else {
+    // The blocking obstacle: the stretch of sensed boundary holding the point in the way;
+    // its LTG nodes are that stretch's ends.
+    std::size_t best = 0;
+    double near = kInf;
+    for (std::size_t k = 0; k < chains.size(); ++k) {
+      const double d = closest_place(chains[k].points, blocked_at).distance;
+      if (d < near) near = d, best = k;
+    }
+    const SensedChain& c = chains[best];
+    episodes_.push_back({x, blocked_at});
+    if (c.closed) return loop_closed(r, RecordedObstacle(c.points, 1, p_.tolerance));
+    consider(1, c.points.back());
+    consider(-1, c.points.front());
+    const PolylinePlace at = closest_place(c.points, blocked_at);
+    boundary = at.point;
+    if (dir != 0 && at.segment + 1 < c.points.size())
+      trace_direction_ =
+          static_cast<double>(dir) * unit(c.points[at.segment + 1] - c.points[at.segment]);
+    if (dir == 0) {
+      // The stretch ends where the robot stands (the wall it touches, seen edge-on, shows
+      // only the point under it): along that wall, as by touch.
+      for (int d : {1, -1}) {
+        if (const auto e = walking_edge(r, d, p_.tolerance)) consider(d, d > 0 ? e->b : e->a);
+      }
+      const auto e = dir != 0 ? walking_edge(r, dir, p_.tolerance) : std::nullopt;
+      if (e) trace_direction_ = unit((dir > 0 ? e->b : e->a) - x);
+    }
+    // With noise, d_reach and d_followed each err by the noise: a leave must beat the last
+    // one (the bound) by the progress, so that leaves are finitely many.
+    d_followed_ = p_.noise_margin > 0.0 ? bound_ : kInf;
   }
-  if (dir == 0) return finish(x, PlanStatus::stalled);  // touching nothing to walk along
+  if (dir == 0) return finish(x, PlanStatus::stalled);  // nothing to follow
+  if (chains.empty()) episodes_.push_back({x, x});
   mode_ = Mode::follow;
-  ring_ = ring;
+  goal_behind_wall_ = false;
   dir_ = dir;
   start_ = x;
   walked_ = 0.0;
-  d_followed_ = distance(x, goal_);
-  episodes_.push_back(ring);
-  engage(ring);
+  head_ = anchor_ = boundary;
+  trace_.assign(1, boundary);
+  traced_ = 0.0;
   return std::nullopt;
 }
 
-void TangentBug::engage(std::uint32_t ring) {
-  const auto it = std::lower_bound(engaged_.begin(), engaged_.end(), ring);
-  if (it == engaged_.end() || *it != ring) engaged_.insert(it, ring);
+std::optional<SensedChain> TangentBug::followed_chain(const SensorReading& r) const {
+  std::vector<SensedChain> chains = sensed_chains(r, p_.tolerance);
+  if (chains.empty()) return std::nullopt;
+  std::size_t best = 0;
+  double near = kInf;
+  for (std::size_t k = 0; k < chains.size(); ++k) {
+    const double d = closest_place(chains[k].points, head_).distance;
+    if (d < near) near = d, best = k;
+  }
+  // The node last headed for out of sight (seen edge-on, it dropped out of its stretch, whose
+  // rest is still in sight): the stretch through the point before it, unless another passes
+  // nearer the node (else a neighbouring obstacle's stretch is taken for the followed one,
+  // and the robot circles that obstacle for ever).
+  if (near > loop_tolerance()) {
+    for (std::size_t k = 0; k < chains.size(); ++k) {
+      const double d = closest_place(chains[k].points, anchor_).distance;
+      if (d < near) near = d, best = k;
+    }
+  }
+  SensedChain c = std::move(chains[best]);
+  if (dir_ < 0) std::reverse(c.points.begin(), c.points.end());
+  return c;
+}
+
+bool TangentBug::record(const SensedChain& c) {
+  const PolylinePlace at = closest_place(c.points, head_);
+  const double eps = loop_tolerance();
+  const Vec2 began = trace_.front();
+  std::vector<Vec2> ahead{at.point};
+  ahead.insert(ahead.end(), c.points.begin() + static_cast<std::ptrdiff_t>(at.segment + 1),
+               c.points.end());
+  for (Vec2 q : ahead) {
+    const Vec2 p = trace_.back();
+    if (!beyond(q, p, p_.tolerance)) continue;
+    // Back where the record began, going the same way: round the obstacle. (The other face
+    // of a thin wall passes as near, the other way.)
+    const Vec2 foot = project_to_segment(began, p, q).point;
+    if (traced_ > 4.0 * eps && within(foot, began, eps) && dot(q - p, trace_direction_) > 0.0) {
+      trace_.push_back(foot);
+      return true;
+    }
+    traced_ += distance(p, q);
+    trace_.push_back(q);
+  }
+  return false;
+}
+
+PlanStep TangentBug::chase(const SensorReading& r, const SensedChain& c, double max_step) {
+  const Vec2 x = r.position, node = c.points.back();
+  if (distance(node, x) <= p_.tolerance) {
+    // The stretch ends where the robot stands: along the wall it touches, if any.
+    if (!r.contacts.empty()) return walk(r, max_step, std::nullopt);
+    return PlanStep{x, PlanStatus::moving};
+  }
+  head_ = node;
+  anchor_ = c.points.size() > 1 ? c.points[c.points.size() - 2] : node;
+  heading_ = node;
+  return move_toward(x, node + p_.noise_margin * unit(node - x), max_step);
 }
 
 TangentBug::Decision TangentBug::follow(const SensorReading& r, double max_step) {
-  const Vec2 x = r.position;
-  // d_followed: the followed obstacle as sensed now, except the point under the robot (so
-  // that a contact sensor can still leave where it stands).
-  for (std::size_t k = 0; k < r.visible.pieces.size(); ++k) {
-    if (r.piece_rings[k] != ring_) continue;
-    const Vec2 q = project_to_segment(goal_, r.visible.pieces[k].a, r.visible.pieces[k].b).point;
-    if (distance(q, x) > p_.tolerance)
-      d_followed_ = std::min(d_followed_, distance(q, goal_) + p_.noise_margin);
+  const std::optional<SensedChain> c = followed_chain(r);
+  if (!c) return finish(r.position, PlanStatus::stalled);  // lost sight of every wall
+  if (c->closed) return loop_closed(r, RecordedObstacle(c->points, dir_, p_.tolerance));
+  // The goal on the visible followed boundary: a point in sight, whatever a touched wall
+  // grazing the way to it says.
+  if (closest_place(c->points, goal_).distance <= p_.tolerance) {
+    heading_ = goal_;
+    return move_toward(r.position, goal_, max_step);
   }
-  const ReachPoint reach = reach_point(r, goal_, ring_, p_.tolerance);
-  if (reach.distance < d_followed_ - p_.progress) {
+  // d_followed: the followed boundary as sensed now.
+  for (std::size_t k = 0; k + 1 < c->points.size(); ++k) {
+    const Vec2 q = project_to_segment(goal_, c->points[k], c->points[k + 1]).point;
+    d_followed_ = std::min(d_followed_, distance(q, goal_) + p_.noise_margin);
+  }
+  if (c->points.size() == 1) d_followed_ = std::min(d_followed_, distance(c->points[0], goal_));
+  const ReachPoint reach = reach_point(r, goal_, &*c, p_.tolerance);
+  // The goal in sight counts even when it lies on the followed boundary (d_followed 0). The
+  // reach point is sensed too: with noise it must be nearer beyond the noise of both.
+  const bool in_sight =
+      reach.distance == 0.0 &&
+      (!goal_behind_wall_ || free_ray(r, unit(goal_ - r.position), p_.tolerance).distance >=
+                                 distance(r.position, goal_) + p_.noise_margin);
+  if (reach.distance + p_.noise_margin < d_followed_ - p_.progress || in_sight) {
     bound_ = d_followed_;  // what every later node and leave must beat
+    leave_to_ = reach.point;
+    leave_length_ += distance(r.position, leave_to_);
+    mode_ = Mode::leave;
+    return std::nullopt;
+  }
+  if (record(*c)) return loop_closed(r, RecordedObstacle(trace_, dir_, p_.tolerance));
+  return chase(r, *c, max_step);
+}
+
+TangentBug::Decision TangentBug::follow_by_touch(const SensorReading& r, double max_step) {
+  const Vec2 x = r.position;
+  const ReachPoint reach = reach_point(r, goal_, nullptr, p_.tolerance);
+  if (reach.distance < d_followed_ - p_.progress) {
+    bound_ = d_followed_;
     leave_to_ = reach.point;
     leave_length_ += distance(x, leave_to_);
     mode_ = Mode::leave;
     return std::nullopt;
   }
+  // The point under the robot counts after the leave test, so that it can leave where it
+  // stands.
   d_followed_ = std::min(d_followed_, distance(x, goal_));
-  if (walked_ > p_.tolerance && distance(x, start_) <= p_.tolerance) return loop_closed(r);
+  // The robot walks on the boundary and stops at every vertex: its positions are the record.
+  if (beyond(x, trace_.back(), p_.tolerance)) trace_.push_back(x);
+  if (walked_ > p_.tolerance && distance(x, start_) <= p_.tolerance)
+    return loop_closed(r, RecordedObstacle(trace_, dir_, p_.tolerance));
   return walk(r, max_step, start_);
 }
 
@@ -251,6 +382,15 @@ TangentBug::Decision TangentBug::leave(const SensorReading& r, double max_step) 
   const double d = distance(x, leave_to_);
   // Arrived, or a wall the robot touches stands in the way (possible only with noise).
   if (d <= p_.tolerance || free_ray(r, (leave_to_ - x) / d, p_.tolerance).distance == 0.0) {
+    if (d > p_.tolerance && leave_to_ == goal_ && p_.noise_margin > 0.0) {
+      // The goal looked free and lies just beyond a wall: no leave after all. The episode
+      // and its record go on, the goal in sight now only with the way free past it by the
+      // margin (else the robot heads for it again from every point of the boundary and
+      // never closes the loop).
+      goal_behind_wall_ = true;
+      mode_ = Mode::follow;
+      return std::nullopt;
+    }
     resume_motion_to_goal();
     return std::nullopt;
   }
@@ -258,37 +398,123 @@ TangentBug::Decision TangentBug::leave(const SensorReading& r, double max_step) 
   return move_toward(x, leave_to_, max_step);
 }
 
-TangentBug::Decision TangentBug::loop_closed(const SensorReading& r) {
-  memory_.close(ring_);
+TangentBug::Decision TangentBug::loop_closed(const SensorReading& r, RecordedObstacle obstacle) {
   ++loops_;
-  if (memory_.encloses(ring_, goal_)) return walk_to(r, ring_, Mode::to_projection);
+  known_.push_back(std::move(obstacle));
+  if (known_.back().encloses(goal_)) return walk_to(r, known_.size() - 1, Mode::to_projection);
   ++recoveries_;
-  return walk_to(r, ring_, Mode::to_closest);
+  return walk_to(r, known_.size() - 1, Mode::to_closest);
 }
 
-TangentBug::Decision TangentBug::walk_to(const SensorReading& r, std::uint32_t ring, Mode mode) {
-  const Vec2 x = r.position;
-  ring_ = ring;
+TangentBug::Decision TangentBug::walk_to(const SensorReading& r, std::size_t known, Mode mode) {
+  const RecordedObstacle& o = known_[known];
+  obstacle_ = known;
   mode_ = mode;
-  target_ = memory_.closest(ring, goal_);
-  // The shorter way round.
-  const auto ef = walking_edge(r, 1, p_.tolerance), eb = walking_edge(r, -1, p_.tolerance);
-  const double af = ef ? memory_.arc(ring, {x, ef->index}, target_, 1) : kInf;
-  const double ab = eb ? memory_.arc(ring, {x, eb->index}, target_, -1) : kInf;
-  dir_ = af <= ab ? 1 : -1;
+  straight_ = false;
+  target_ = o.closest(goal_);
+  // The shorter way round, from the recorded point nearest the robot.
+  const RingPlace here = o.closest(r.position);
+  dir_ = o.arc(here, target_, 1) <= o.arc(here, target_, -1) ? 1 : -1;
+  head_ = anchor_ = here.point;
   return std::nullopt;
 }
 
 TangentBug::Decision TangentBug::walk_on(const SensorReading& r, double max_step) {
-  const Vec2 x = r.position;
-  if (distance(x, target_.point) <= p_.tolerance) {
-    if (mode_ == Mode::to_projection) return finish(target_.point, PlanStatus::projected);
+  const Vec2 x = r.position, target = target_.point;
+  // With noise the recorded point may lie off the wall, by more than the noise where it is
+  // the nearest of many noisy points: near it, or touching where the straight way to it
+  // stopped, will do (the settling approach and descent, by touch, do the rest).
+  if (within(x, target, p_.tolerance + 10.0 * p_.noise_margin) ||
+      (!r.contacts.empty() && straight_)) {
+    straight_ = false;
+    if (mode_ == Mode::to_projection) {
+      mode_ = Mode::settle;
+      seeking_ = sought_ = false;
+      return std::nullopt;
+    }
     // The way toward the goal is free here: motion to goal again, no bound from before.
     resume_motion_to_goal();
     bound_ = kInf;
     return std::nullopt;
   }
-  return walk(r, max_step, target_.point);
+  if (by_touch(r)) return walk(r, max_step, target);
+  const double d = distance(x, target);
+  const Vec2 u = (target - x) / d;
+  // In sight (within range, nothing in the way): straight there. Else on round the obstacle,
+  // as when following it.
+  if (d <= r.range + p_.noise_margin &&
+      free_ray(r, u, p_.tolerance).distance >= d - p_.tolerance - p_.noise_margin) {
+    heading_ = target;
+    straight_ = true;
+    return move_toward(x, target + p_.noise_margin * u, max_step);
+  }
+  straight_ = false;
+  const std::optional<SensedChain> c = followed_chain(r);
+  if (!c) return finish(x, PlanStatus::stalled);
+  return chase(r, *c, max_step);
+}
+
+TangentBug::Decision TangentBug::settle(const SensorReading& r, double max_step) {
+  const Vec2 x = r.position;
+  const FreeRay toward = free_ray(r, unit(goal_ - x), p_.tolerance);
+  if (r.contacts.empty()) {
+    // Short of the wall (noise): straight at the goal until touching.
+    if (toward.blocked_at)
+      return move_toward(x, goal_, std::min(max_step, toward.distance + p_.noise_margin));
+  } else {
+    const RecordedObstacle& o = known_[obstacle_];
+    const double recorded = distance(target_.point, goal_);
+    const double enough = recorded + p_.noise_margin + p_.tolerance;
+    if (seeking_) {
+      // By touch toward the record's closest point, until there or as near the goal.
+      if (walked_ < seek_arc_ - p_.noise_margin && distance(x, goal_) > recorded)
+        return walk(r, max_step, std::nullopt);
+      seeking_ = false;
+    }
+    // Along the touched wall while the goal gets nearer: contacts are exact, so this ends at
+    // the wall's point closest to the goal.
+    Vec2 best = x;
+    double nearest = distance(x, goal_) - p_.tolerance;
+    for (int d : {1, -1}) {
+      const auto e = walking_edge(r, d, p_.tolerance);
+      if (!e) continue;
+      const Vec2 q = project_to_segment(goal_, e->a, e->b).point;
+      if (distance(q, goal_) < nearest) {
+        nearest = distance(q, goal_);
+        best = q;
+      }
+    }
+    if (!(best == x)) return move_toward(x, best, max_step);
+    if (toward.distance == 0.0) {
+      // A touched wall faces the goal: nothing of Ω near lies nearer it. With noise this may
+      // be a local minimum on another face than the record's closest point (the end or the
+      // far face of a wall thinner than the noise): unless it is as near the goal as that
+      // point and the record joins the two without going round anything, walk there once
+      // by touch, the shorter way round the record, and slide again.
+      const RingPlace here = o.closest(x);
+      const int way = o.arc(here, target_, 1) <= o.arc(here, target_, -1) ? 1 : -1;
+      const double arc = o.arc(here, target_, way);
+      const bool elsewhere = arc > distance(here.point, target_.point) + 2.0 * p_.noise_margin;
+      if (!sought_ && (distance(x, goal_) > enough || elsewhere)) {
+        dir_ = way;
+        seeking_ = sought_ = true;
+        seek_arc_ = arc;
+        walked_ = 0.0;
+        return walk(r, max_step, std::nullopt);
+      }
+      if (distance(x, goal_) <= enough) return finish(x, PlanStatus::projected);
+    }
+  }
+  return forget_record();
+}
+
+TangentBug::Decision TangentBug::forget_record() {
+  // The record was wrong (noise): forget it, and motion to goal again.
+  ++recoveries_;
+  known_.erase(known_.begin() + static_cast<std::ptrdiff_t>(obstacle_));
+  resume_motion_to_goal();
+  bound_ = kInf;
+  return std::nullopt;
 }
 
 PlanStep TangentBug::walk(const SensorReading& r, double max_step, std::optional<Vec2> stop) {
@@ -331,30 +557,47 @@ PlannerEntry tangent_bug_entry() {
   };
   e.contract.complete = true;
   // An empirical envelope, not a theorem (Kamon et al. prove termination, not a length
-  // bound): L* + the perimeter of the ring followed in each boundary-following episode + that
-  // of each ring only steered round + every leave segment (a leave heads for the visible
-  // point nearest the goal, however far off the shortest path) (+ half the enclosing ring's
-  // perimeter for a goal outside Ω: the walk to the projection); range noise makes local
-  // minima and leave points where there are none, so with noise 1.5 times that
-  // (docs/tangent_bug.md).
+  // bound), evaluated with the map the planner never sees (which ring each recorded point
+  // lies on): L* + for each boundary-following episode the followed ring's perimeter and
+  // the way from where the episode began to that ring + the perimeter of each ring only
+  // steered round + every leave segment (+ half the enclosing ring's perimeter for a goal
+  // outside Ω: the way to the projection); range noise makes local minima and leave points
+  // where there are none, so with noise 1.5 times that (docs/tangent_bug.md).
   e.contract.path_bound = [](const PathBoundCase& c) {
     const auto& bug = dynamic_cast<const TangentBug&>(c.planner);
+    const Environment& env = c.environment;
+    const auto ring_of = [&](Vec2 p) {
+      std::uint32_t ring = 0;
+      double near = kInf;
+      for (const BoundaryEdge& b : env.boundary()) {
+        const double d = distance(project_to_segment(p, b.a, b.b).point, p);
+        if (d < near) near = d, ring = b.ring;
+      }
+      return ring;
+    };
     const auto perimeter = [&](std::uint32_t ring) {
-      const std::vector<Vec2>& r = c.environment.rings()[ring];
+      const std::vector<Vec2>& r = env.rings()[ring];
       double sum = 0.0;
       for (std::size_t i = 0; i < r.size(); ++i)
         sum += distance(r[i], r[(i + 1) % r.size()]);
       return sum;
     };
     double bound = c.shortest + bug.leave_length();
-    const auto& episodes = bug.episodes();
-    for (std::uint32_t ring : episodes)
-      bound += perimeter(ring);
-    for (std::uint32_t ring : bug.engaged()) {
-      if (std::find(episodes.begin(), episodes.end(), ring) == episodes.end())
+    std::vector<std::uint32_t> followed;
+    for (const TangentBug::Episode& ep : bug.episodes()) {
+      followed.push_back(ring_of(ep.boundary));
+      bound += perimeter(followed.back()) + distance(ep.start, ep.boundary);
+    }
+    std::vector<std::uint32_t> steered;
+    for (Vec2 p : bug.engaged())
+      steered.push_back(ring_of(p));
+    std::sort(steered.begin(), steered.end());
+    steered.erase(std::unique(steered.begin(), steered.end()), steered.end());
+    for (std::uint32_t ring : steered) {
+      if (std::find(followed.begin(), followed.end(), ring) == followed.end())
         bound += perimeter(ring);
     }
-    if (!c.reachable && !episodes.empty()) bound += 0.5 * perimeter(episodes.back());
+    if (!c.reachable && !followed.empty()) bound += 0.5 * perimeter(followed.back());
     return c.noise_sigma > 0.0 ? 1.5 * bound : bound;
   };
   return e;

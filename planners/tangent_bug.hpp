@@ -1,57 +1,61 @@
 #pragma once
 // TangentBug (Kamon, Rivlin and Rimon, IJRR 1998) over a range sensor of any range R (0 for a
 // contact sensor, finite, or infinite), with the target projection of Breitenmoser et al.
-// (2010, Sec. III-A): a goal that lies inside an obstacle is found unreachable by walking
+// (2010, Sec. III-A): a goal that lies inside an obstacle is found unreachable by going
 // once round that obstacle, and the robot then settles at the obstacle's point closest to
-// the goal. docs/tangent_bug.md sets the code beside the algorithm, line by line.
+// the goal. The planner reads only what the sensors measure (no obstacle ids): which sensed
+// points belong to the followed obstacle it infers from the continuity of the visible
+// boundary. docs/tangent_bug.md sets the code beside the algorithm, line by line.
 //
 // - Motion to goal: toward the node of the local tangent graph (the goal, when the way to it
 //   is free within R, or a discontinuity point O) with the least heuristic distance
 //   d(x, O) + d(O, goal), for as long as that distance does not increase. When it would
-//   increase, the robot is at a local minimum: it drives toward the goal until it touches
-//   the obstacle in the way and follows that obstacle's boundary.
-// - Boundary following: along the blocking obstacle, in the direction that continues the
-//   motion. d_followed is the least distance to the goal of the followed obstacle's sensed
-//   boundary since this episode began (starting with where it began); d_reach that of the
-//   visible free region. The robot leaves toward the d_reach point as soon as
-//   d_reach < d_followed, then resumes motion to goal. Every node it heads for afterwards,
-//   until the next leave, must be closer to the goal than that d_followed: the distance at
-//   which boundary following starts falls strictly from one episode to the next, so the
-//   robot never returns to an obstacle it left and the episodes end (this is what keeps it
-//   from leaving an obstacle only to head for that obstacle's corner again).
-// - Back at the point where this episode began, without having left: a loop. The ring is
-//   now known exactly; it encloses the goal (the goal lies inside that obstacle, or outside
-//   the outer boundary), so the goal is unreachable: the robot walks the shorter way to the
-//   ring's point closest to the goal (the projection) and reports `projected`. A loop round a
-//   ring that does not enclose the goal cannot happen in exact arithmetic (at the ring's
-//   point closest to the goal the way toward it is free, so the robot leaves there); should
-//   rounding or range noise hide that leave, the robot walks to that point and resumes
-//   motion to goal from it (counted in `recoveries`), so a reachable goal is never declared
-//   unreachable.
+//   increase, the robot is at a local minimum and follows the blocking obstacle: the
+//   sensed boundary in the way to the goal.
+// - Boundary following, R > 0: toward the end, in the chosen direction, of the visible
+//   stretch of the followed boundary (its LTG node), without touching it. The followed
+//   stretch is the one through the node last headed for. R = 0: along the wall by touch.
+//   d_followed is the least distance to the goal of the followed boundary as sensed since
+//   this episode began; d_reach that of the visible free region beyond it. The robot leaves
+//   toward the d_reach point as soon as d_reach < d_followed, then resumes motion to goal.
+//   Every node it heads for afterwards, until the next leave, must be closer to the goal
+//   than that d_followed, so episodes start ever closer to the goal and end.
+// - The followed boundary is recorded as the robot goes (R > 0: the sensed stretches, from
+//   where the episode began on; R = 0: the robot's own positions). When the record comes
+//   back to where it began, in the same direction, the robot has gone round: the record is
+//   the obstacle, closed into a polygon. If it encloses the goal (inside a hole, or outside
+//   the outer boundary), the goal is unreachable: the robot goes the shorter way to the
+//   recorded point closest to the goal, slides along the wall it touches there to the
+//   wall's point closest to the goal, and reports `projected` once a touched wall faces the
+//   goal. A loop round an obstacle that does not enclose the goal cannot happen in exact
+//   arithmetic; should rounding or noise hide the leave, the robot goes to that point and
+//   resumes motion to goal from it (counted in `recoveries`), so a reachable goal is never
+//   declared unreachable.
+//
+// Decisions are taken only on a range reading taken where the robot stands: on a stale one
+// (the sensor reads less often than the robot steps, or a reading was lost) the robot keeps
+// on toward the point its last decision chose. With range noise σ every sensed distance
+// carries a margin of 3σ, and an unreachable goal is projected within 6σ.
 //
 // A goal that moves while the robot is on its way (move_goal) keeps the mode and the episode:
 // a robot following a wall follows on, one heading for a node heads on. Every distance to
 // the goal changes by at most the move, so h, d_followed and the bound widen by it: what was
-// good enough stays so. Without this, a target moved every period restarts motion to goal
-// each time, and a robot just past a corner heads back to it (the straight-line heuristic
-// of the corner behind beats the one ahead) and shuttles there for as long as the target
-// moves. A leave under way stays committed to its point; an approach heads for the goal as
-// it is now. A goal moved while the robot walks to a projection, or after it ended, starts
-// afresh.
+// good enough stays so. A leave under way stays committed to its point. A goal moved while
+// the robot goes to a projection, or after it ended, starts afresh.
 //
-// What was learned by walking round an obstacle stays across goals: a later goal inside it
-// is projected as soon as the robot touches it. A new goal restarts motion to goal from
-// where the robot stands. Every goal ends: a path longer than `path_budget`, or 20 steps in
-// a row without moving, reports `stalled` (never expected for TangentBug: the planner
-// contract suite checks it does not happen).
-#include <cstdint>
+// What was learned by going round an obstacle stays across goals: a later goal it encloses
+// is projected as soon as that obstacle blocks the way. A new goal restarts motion to goal
+// from where the robot stands. Every goal ends: a path longer than `path_budget`, or 20
+// steps in a row without moving, reports `stalled` (never expected for TangentBug: the
+// planner contract suite checks it does not happen).
 #include <limits>
 #include <optional>
 #include <vector>
 
-#include "planners/obstacle_memory.hpp"
+#include "planners/local_tangent_graph.hpp"
 #include "planners/planner.hpp"
 #include "planners/planner_entry.hpp"
+#include "planners/recorded_obstacle.hpp"
 
 namespace covsim {
 
@@ -71,45 +75,63 @@ struct TangentBugParams {
 
 class TangentBug final : public Planner {
  public:
-  explicit TangentBug(TangentBugParams params) : p_(params), memory_(params.tolerance) {}
+  explicit TangentBug(TangentBugParams params) : p_(params) {}
   std::string_view name() const override { return "tangent_bug"; }
   void set_goal(Vec2 goal) override;
   void move_goal(Vec2 goal) override;
   PlanStep step(const SensorReading& reading, double max_step) override;
 
-  enum class Mode { motion_to_goal, approach, follow, leave, to_projection, to_closest, done };
+  enum class Mode { motion_to_goal, follow, leave, to_projection, to_closest, settle, done };
   Mode mode() const { return mode_; }
-  // For the current goal: the ring followed in each boundary-following episode, the loops
-  // closed, and the loops closed round a ring that did not enclose the goal.
-  const std::vector<std::uint32_t>& episodes() const { return episodes_; }
+  // For the current goal, each boundary-following episode: where the robot stood when it
+  // began, and the followed boundary point it began from.
+  struct Episode {
+    Vec2 start, boundary;
+  };
+  const std::vector<Episode>& episodes() const { return episodes_; }
   std::uint32_t loops() const { return loops_; }
-  // For the current goal: the obstacles it steered round (headed for a point of) in motion
-  // to goal or followed, each once, in increasing order.
-  const std::vector<std::uint32_t>& engaged() const { return engaged_; }
   std::uint32_t recoveries() const { return recoveries_; }
+  // For the current goal: the boundary points it headed for in motion to goal (for the
+  // obstacles it steered round), each change of node once.
+  const std::vector<Vec2>& engaged() const { return engaged_; }
   // For the current goal: the summed length of the straight leave segments it set out on
-  // (from the leave point to the reach point T), as planned.
+  // (from the leave point to the reach point), as planned.
   double leave_length() const { return leave_length_; }
+  // What it has learned: every obstacle it went round.
+  const std::vector<RecordedObstacle>& known() const { return known_; }
 
  private:
   using Decision = std::optional<PlanStep>;  // nullopt: the mode changed, decide again
   Decision motion_to_goal(const SensorReading& r, double max_step);
-  Decision approach(const SensorReading& r, double max_step);
-  Decision begin_following(const SensorReading& r, std::uint32_t ring);
+  Decision begin_following(const SensorReading& r, Vec2 blocked_at);
   Decision follow(const SensorReading& r, double max_step);
+  Decision follow_by_touch(const SensorReading& r, double max_step);
   Decision leave(const SensorReading& r, double max_step);
-  Decision loop_closed(const SensorReading& r);
-  Decision walk_to(const SensorReading& r, std::uint32_t ring, Mode mode);
+  Decision loop_closed(const SensorReading& r, RecordedObstacle obstacle);
+  // Toward known_[known]'s point closest to the goal, the shorter way round.
+  Decision walk_to(const SensorReading& r, std::size_t known, Mode mode);
   Decision walk_on(const SensorReading& r, double max_step);
-  // The next point along the followed ring in dir_, stopping at the edge's end, at the
-  // edge's point closest to the goal, and at `stop` if it lies ahead on this edge.
+  Decision settle(const SensorReading& r, double max_step);
+  Decision forget_record();
+  // The visible stretch of the followed boundary (the one through head_), its points in the
+  // walking direction.
+  std::optional<SensedChain> followed_chain(const SensorReading& r) const;
+  // Toward the followed stretch's end in the walking direction (past it by the noise margin,
+  // along the ray, which range noise does not turn).
+  PlanStep chase(const SensorReading& r, const SensedChain& c, double max_step);
+  // Records the followed stretch from head_ on; true when the record came back to where the
+  // episode began.
+  bool record(const SensedChain& c);
+  // The next point along the touched wall in dir_, stopping at the edge's end, at the edge's
+  // point closest to the goal, and at `stop` if it lies ahead on this edge.
   PlanStep walk(const SensorReading& r, double max_step, std::optional<Vec2> stop);
   PlanStep move_toward(Vec2 x, Vec2 p, double max_step);
   PlanStep finish(Vec2 at, PlanStatus s);
   void resume_motion_to_goal();
+  bool by_touch(const SensorReading& r) const { return !(r.range > 0.0); }
+  double loop_tolerance() const { return p_.tolerance + 2.0 * p_.noise_margin; }
 
   TangentBugParams p_;
-  ObstacleMemory memory_;
   Vec2 goal_;
   Mode mode_ = Mode::done;
   PlanStatus status_ = PlanStatus::reached;
@@ -118,23 +140,35 @@ class TangentBug final : public Planner {
   double bound_ = std::numeric_limits<double>::infinity();   // d_followed at the last leave
   std::optional<Vec2> heading_;                              // the node last headed for
   // Boundary following.
-  std::uint32_t ring_ = 0;
   int dir_ = 1;
-  Vec2 start_;
+  Vec2 start_;  // where the robot stood when the episode began
   double walked_ = 0.0;
+  bool left_start_ = false;        // the robot has been away from start_ (R = 0)
+  bool goal_behind_wall_ = false;  // a leave for the goal in sight met a wall (noise)
   double d_followed_ = 0.0;
   Vec2 leave_to_;
-  RingPoint target_;  // to_projection and to_closest
+  Vec2 head_;                 // the followed boundary's node last headed for
+  Vec2 anchor_;               // the followed stretch's point before head_
+  std::vector<Vec2> trace_;   // the followed boundary recorded in this episode
+  Vec2 trace_direction_;      // the boundary's direction where the record began
+  double traced_ = 0.0;       // the record's length
+  std::size_t obstacle_ = 0;  // in known_: to_projection, to_closest and settle
+  RingPlace target_;
+  bool straight_ = false;  // the last step went straight for target_
+  bool seeking_ = false;   // settle: walking by touch toward target_ from a local minimum
+  bool sought_ = false;    // settle: that walk was made
+  double seek_arc_ = 0.0;  // its length along the record
+  std::vector<RecordedObstacle> known_;
   // Bookkeeping for the goal.
   double path_ = 0.0;
   std::optional<Vec2> last_position_;
+  std::optional<Vec2> aim_;  // where the last decision moved toward
   // The direction of the last step that moved; kept across goals, it is the robot's own.
   std::optional<Vec2> motion_;
   static constexpr int kMaxIdleSteps = 20;
   int idle_steps_ = 0;
-  std::vector<std::uint32_t> episodes_;
-  std::vector<std::uint32_t> engaged_;
-  void engage(std::uint32_t ring);
+  std::vector<Episode> episodes_;
+  std::vector<Vec2> engaged_;
   std::uint32_t loops_ = 0, recoveries_ = 0;
   double leave_length_ = 0.0;
 };

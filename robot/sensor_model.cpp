@@ -41,7 +41,8 @@ void SensorModel::take_reading(std::uint32_t i, Vec2 position) {
 
 SensorReading SensorModel::reading(std::uint32_t i, Vec2 position) {
   if (config_.exact()) return sense(env_, position, config_.range);
-  // The latest range reading, with the robot's own position and its current contacts.
+  // The latest range reading (taken at its origin), with the robot's own position and its
+  // current contacts.
   if (!config_.period) take_reading(i, position);
   SensorReading now = last_[i];
   now.position = position;

@@ -3,7 +3,7 @@
 // every loop-2 step. With a period, "sense" events refresh each robot's reading and the
 // planner gets the latest one; readings may carry Gaussian range noise and be lost (dropout,
 // the planner keeping the last one), from per-robot streams. Contacts and the robot's own
-// position are always current.
+// position are always current; the reading's origin says where its range part was taken.
 #include <optional>
 #include <vector>
 

@@ -183,4 +183,33 @@ ObstacleCourse obstacle_course(std::uint64_t seed, const ObstacleCourseSpec& spe
   return c;
 }
 
+CombCourse comb_course(std::uint64_t seed) {
+  RandomStream rng(seed, 0, "comb-course");
+  const auto k = static_cast<int>(5 + rng.below(5));  // teeth
+  const double gap = rng.uniform(0.3, 0.6), t = rng.uniform(0.05, 0.15);
+  const double depth = rng.uniform(1.0, 1.5), bar = rng.uniform(0.1, 0.2);
+  const double margin = rng.uniform(0.6, 1.2), w = k * t + (k - 1) * gap;
+  const double y0 = 1.5, top = y0 + depth + bar;  // the tips' line and the bar's back
+  CombCourse c;
+  c.depth = depth;
+  c.course.outer = {{0, 0}, {w + 2 * margin, 0}, {w + 2 * margin, top + 1.5}, {0, top + 1.5}};
+  // Counter-clockwise: along the tips and gaps, up the last tooth, back along the bar.
+  Ring comb;
+  for (int i = 0; i < k; ++i) {
+    const double x = margin + i * (t + gap);
+    if (i > 0) comb.push_back({x, y0 + depth});
+    comb.insert(comb.end(), {{x, y0}, {x + t, y0}});
+    if (i + 1 < k) comb.push_back({x + t, y0 + depth});
+  }
+  comb.insert(comb.end(), {{margin + w, top}, {margin, top}});
+  c.course.holes.push_back(std::move(comb));
+  c.course.shapes.push_back(ObstacleShape::comb);
+  c.course.narrowest = std::min(gap, margin);
+  c.below.add({margin, y0 - 1.2});
+  c.below.add({margin + w, y0 - 0.2});
+  c.above.add({margin, top + 0.2});
+  c.above.add({margin + w, top + 1.2});
+  return c;
+}
+
 }  // namespace covsim

@@ -35,4 +35,15 @@ struct ObstacleCourse {
 // Throws std::invalid_argument for a spec out of range.
 ObstacleCourse obstacle_course(std::uint64_t seed, const ObstacleCourseSpec& spec = {});
 
+// A room holding one comb between a robot and its goal: a bar with 5 to 9 teeth 1 to 1.5 m
+// deep pointing at the robot's side, gaps of 0.3 to 0.6 m between them (dead ends a Bug
+// algorithm that follows by touch walks into one after another). Starts lie in `below`,
+// 0.2 to 1.2 m short of the teeth's tips; goals in `above`, 0.2 to 1.2 m behind the bar.
+struct CombCourse {
+  ObstacleCourse course;  // one hole, the comb
+  Box below, above;
+  double depth = 0.0;  // of the teeth
+};
+CombCourse comb_course(std::uint64_t seed);
+
 }  // namespace covsim

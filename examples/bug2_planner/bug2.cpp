@@ -33,8 +33,6 @@ PlanStep Bug2::step(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
   if (mode_ == Mode::done) return {x, status_};
   if (!line_start_) line_start_ = x;
-  for (const ContactEdge& c : r.contacts)
-    memory_.remember(c);
   const double dg = distance(x, goal_);
   if (dg <= tolerance_) return finish(goal_, PlanStatus::reached);
   const Vec2 u = (goal_ - x) / dg;
@@ -43,9 +41,9 @@ PlanStep Bug2::step(const SensorReading& r, double max_step) {
     if (f.distance > 0.0) return {dg <= max_step ? goal_ : x + max_step * u, PlanStatus::moving};
     // A wall faces the goal: follow it, keeping it on the right.
     mode_ = Mode::follow;
-    ring_ = *f.blocker;
     hit_ = x;
     walked_ = 0.0;
+    walked_points_.assign(1, x);
   }
   if (mode_ == Mode::follow) {
     // Back on the m-line, closer than the hit point, with the way free: leave.
@@ -56,11 +54,13 @@ PlanStep Bug2::step(const SensorReading& r, double max_step) {
       mode_ = Mode::line;
       return step(r, max_step);
     }
+    // It stops at every vertex, so its positions along the wall are the obstacle.
+    if (distance(x, walked_points_.back()) > tolerance_) walked_points_.push_back(x);
     if (walked_ > tolerance_ && distance(x, hit_) <= tolerance_) {
-      memory_.close(ring_);
-      if (!memory_.encloses(ring_, goal_)) return finish(x, PlanStatus::stalled);
+      obstacle_.emplace(walked_points_, 1, tolerance_);
+      if (!obstacle_->encloses(goal_)) return finish(x, PlanStatus::stalled);
       mode_ = Mode::to_projection;
-      target_ = memory_.closest(ring_, goal_);
+      target_ = obstacle_->closest(goal_);
     } else {
       return walk(r, max_step, hit_);
     }

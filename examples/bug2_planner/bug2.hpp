@@ -6,15 +6,16 @@
 // unreachable if that obstacle, now walked round, encloses it; the robot then walks to the
 // obstacle's point closest to the goal (the projection) and reports `projected`.
 #include <optional>
+#include <vector>
 
-#include "planners/obstacle_memory.hpp"
 #include "planners/planner_entry.hpp"
+#include "planners/recorded_obstacle.hpp"
 
 namespace example {
 
 class Bug2 final : public covsim::Planner {
  public:
-  explicit Bug2(double tolerance) : tolerance_(tolerance), memory_(tolerance) {}
+  explicit Bug2(double tolerance) : tolerance_(tolerance) {}
   std::string_view name() const override { return "bug2"; }
   void set_goal(covsim::Vec2 goal) override;
   covsim::PlanStep step(const covsim::SensorReading& r, double max_step) override;
@@ -26,14 +27,14 @@ class Bug2 final : public covsim::Planner {
   covsim::PlanStep finish(covsim::Vec2 at, covsim::PlanStatus s);
 
   double tolerance_;
-  covsim::ObstacleMemory memory_;
   covsim::Vec2 goal_, start_, hit_;
   std::optional<covsim::Vec2> line_start_;  // the m-line runs from here to the goal
   Mode mode_ = Mode::done;
   covsim::PlanStatus status_ = covsim::PlanStatus::reached;
-  std::uint32_t ring_ = 0;
   double walked_ = 0.0;
-  covsim::RingPoint target_;
+  std::vector<covsim::Vec2> walked_points_;  // its positions along the wall, the obstacle
+  std::optional<covsim::RecordedObstacle> obstacle_;
+  covsim::RingPlace target_;
 };
 
 // Its registry entry: name "bug2", no parameters.

@@ -192,6 +192,9 @@ void bind_components(py::module_& m) {
   py::class_<PyReading>(m, "SensorReading",
                         "What a robot's sensors give its planner at one step (docs/python.md).")
       .def_property_readonly("position", [](const PyReading& s) { return to_array(s.r.position); })
+      .def_property_readonly(
+          "origin", [](const PyReading& s) { return to_array(s.r.origin); },
+          "Where the range reading was taken [m]: the position, unless it is an older one.")
       .def_property_readonly("range", [](const PyReading& s) { return s.r.range; })
       .def_property_readonly(
           "pieces",
@@ -207,7 +210,6 @@ void bind_components(py::module_& m) {
             return a;
           },
           "Visible boundary pieces within range, (k, 4) rows [ax, ay, bx, by] [m].")
-      .def_property_readonly("piece_rings", [](const PyReading& s) { return s.r.piece_rings; })
       .def_property_readonly(
           "discontinuities",
           [](const PyReading& s) { return to_array(s.r.visible.discontinuities); },
@@ -217,10 +219,10 @@ void bind_components(py::module_& m) {
           [](const PyReading& s) {
             py::list out;
             for (const ContactEdge& c : s.r.contacts)
-              out.append(py::make_tuple(c.ring, to_array(c.a), to_array(c.b)));
+              out.append(py::make_tuple(to_array(c.a), to_array(c.b)));
             return out;
           },
-          "Touched boundary edges: (ring, a, b), free space on the left of a -> b.");
+          "Touched wall segments: (a, b), free space on the left of a -> b.");
   py::class_<PyRobot>(m, "Robot")
       .def_readonly("id", &PyRobot::id)
       .def_property_readonly("position", [](const PyRobot& r) { return to_array(r.position); })

@@ -63,8 +63,8 @@ function(load page out_var err_var)
 endfunction()
 
 load(${WORK}/run/replay.html dom err)
-# u_shape converges after 744 motion steps: 745 frames; the slider moves to frame 372.
-if(NOT dom MATCHES "<pre id=\"status\">selftest ok: frame 372 of 745, t=37.2, robots 5, cells 5, cost cursor t=37.2, keys ok, png ok<")
+# u_shape converges after 268 motion steps: 269 frames; the slider moves to frame 134.
+if(NOT dom MATCHES "<pre id=\"status\">selftest ok: frame 134 of 269, t=13.4, robots 5, cells 5, cost cursor t=13.4, keys ok, png ok<")
   string(REGEX MATCH "<pre id=\"status\">[^<]*<" status "${dom}")
   message(FATAL_ERROR "the replay did not draw the frame the slider moved to: ${status}")
 endif()

@@ -41,3 +41,41 @@ TEST_CASE("range noise moves sensed points along their rays with the given sigma
   CHECK(t.contacts.size() == 1);
   CHECK(t.contacts[0].a == touching.contacts[0].a);
 }
+
+TEST_CASE("range noise keeps the visible boundary's continuity: a shared point moves once",
+          "[sensor]") {
+  // A room with a box: from (1, 1) the room's walls are seen in stretches, cut where the
+  // box hides them.
+  const Environment env({{0, 0}, {6, 0}, {6, 6}, {0, 6}}, {{{3, 3}, {4, 3}, {4, 4}, {3, 4}}});
+  const SensorReading clean = sense(env, {1, 1}, INFINITY);
+  RandomStream rng(7, 0, "noise-test");
+  SensorReading noisy = clean;
+  add_range_noise(noisy, rng, 0.05, env.tolerance());
+  const auto& c = clean.visible.pieces;
+  const auto& n = noisy.visible.pieces;
+  REQUIRE(c.size() == n.size());
+  std::size_t joins = 0;
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const std::size_t next = (k + 1) % c.size();
+    if (!within(c[k].b, c[next].a, env.tolerance())) continue;
+    ++joins;
+    CHECK(n[k].b == n[next].a);
+  }
+  CHECK(joins >= 4);
+  // The discontinuities are the noisy pieces' ends, as many as before.
+  REQUIRE(noisy.visible.discontinuities.size() == clean.visible.discontinuities.size());
+  for (Vec2 o : noisy.visible.discontinuities) {
+    bool end = false;
+    for (const SensedPiece& p : n)
+      end = end || o == p.a || o == p.b;
+    CHECK(end);
+  }
+}
+
+TEST_CASE("a contact sensor feels the walls it touches and sees nothing", "[sensor]") {
+  const Environment env({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {});
+  const SensorReading corner = sense(env, {0, 0}, 0.0);
+  CHECK(corner.visible.pieces.empty());
+  CHECK(corner.contacts.size() == 2);
+  CHECK(sense(env, {2, 2}, 0.0).contacts.empty());
+}

@@ -2,8 +2,11 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
 
 #include "planners/planner_run.hpp"
+#include "planners/recorded_obstacle.hpp"
+#include "planners/sensor_reading.hpp"
 #include "planners/tangent_bug.hpp"
 #include "tests/planners/test_environments.hpp"
 
@@ -167,5 +170,120 @@ TEST_CASE("TangentBug keeps its episode while its goal moves", "[tangent_bug]") 
     // The way round the corners to where the goal was reached, and the goal's own motion.
     const double shortest = distance({0.3, 0.6}, c1) + distance(c1, c2) + distance(c2, goal);
     CHECK(length <= shortest + distance({0.83, 0.53}, goal));
+  }
+}
+
+namespace {
+// A comb between the robot and its goal: a bar along y in [1.2, 1.35] with seven teeth
+// 1.2 m deep pointing down, 0.4 m apart. The goal lies behind the bar.
+Environment comb_room() {
+  std::vector<Vec2> comb;
+  const double t = 0.1, gap = 0.4;
+  for (int i = 0; i < 7; ++i) {
+    const double x = 1.0 + i * (t + gap);
+    if (i > 0) comb.push_back({x, 1.2});
+    comb.insert(comb.end(), {{x, 0.0}, {x + t, 0.0}});
+    if (i < 6) comb.push_back({x + t, 1.2});
+  }
+  comb.insert(comb.end(), {{4.1, 1.35}, {1.0, 1.35}});
+  return Environment({{0, -1.5}, {5.1, -1.5}, {5.1, 3}, {0, 3}}, {comb});
+}
+}  // namespace
+
+TEST_CASE("TangentBug with a range sensor cuts round a comb's teeth a contact sensor walks into",
+          "[tangent_bug]") {
+  const Environment env = comb_room();
+  const Vec2 start{2.3, -0.8}, goal{2.4, 2.2};
+  const PlannerRun touch = go(env, start, goal, 0.0);
+  REQUIRE(touch.status == PlanStatus::reached);
+  for (double r : {2.0, kInfinity}) {
+    INFO("range " << r);
+    const PlannerRun run = go(env, start, goal, r);
+    CHECK(run.status == PlanStatus::reached);
+    CHECK(run.length <= (r == 2.0 ? 0.8 : 0.65) * touch.length);
+  }
+}
+
+TEST_CASE("TangentBug follows a comb it sees from tooth to tooth, into one gap at most",
+          "[tangent_bug]") {
+  // A contact sensor walks into every gap on its way; a range sensor heads for the end of
+  // the visible stretch of the comb, the next tooth's tip, and into no gap but where the
+  // boundary following began.
+  const Environment env = comb_room();
+  for (double r : {0.0, 2.0, kInfinity}) {
+    INFO("range " << r);
+    const PlannerRun run = go(env, {2.3, -0.8}, {2.4, 2.2}, r);
+    REQUIRE(run.status == PlanStatus::reached);
+    std::set<int> gaps;  // gap i lies between x = 1.1 + 0.5 i and 1.5 + 0.5 i
+    for (Vec2 p : run.path) {
+      const double i = std::floor((p.x - 1.1) / 0.5);
+      if (p.y > 0.1 && p.y < 1.2 && i >= 0 && i < 6 && p.x - 1.1 - 0.5 * i < 0.4)
+        gaps.insert(static_cast<int>(i));
+    }
+    if (r == 0.0)
+      CHECK(gaps.size() >= 3);
+    else
+      CHECK(gaps.size() <= 1);
+  }
+}
+
+TEST_CASE("A recorded obstacle encloses what lies beyond it from the robot's side",
+          "[tangent_bug]") {
+  // Walked with free space on the left (+1) round a hole, the record runs clockwise.
+  const RecordedObstacle hole({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, 1, 1e-9);
+  CHECK_FALSE(hole.outer());
+  CHECK(hole.encloses({0.5, 0.5}));
+  CHECK_FALSE(hole.encloses({1.5, 0.5}));
+  CHECK_FALSE(hole.encloses({1.0, 0.5}));  // on it: reachable
+  CHECK(hole.perimeter() == Approx(4.0));
+  // The outer boundary, walked the other way (-1), encloses what lies outside it.
+  const RecordedObstacle outer({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, -1, 1e-9);
+  CHECK(outer.outer());
+  CHECK(outer.encloses({1.5, 0.5}));
+  CHECK_FALSE(outer.encloses({0.5, 0.5}));
+  const RingPlace p = outer.closest({1.5, 0.25});
+  CHECK(distance(p.point, Vec2{1, 0.25}) < 1e-12);
+  const RingPlace q = outer.closest({0.5, -1.0});
+  CHECK(outer.arc(q, p, 1) + outer.arc(q, p, -1) == Approx(4.0));
+  CHECK(outer.arc(q, p, 1) == Approx(0.75));  // counter-clockwise: right, then up
+}
+
+TEST_CASE("TangentBug decides only on readings taken where it stands", "[tangent_bug]") {
+  // A range sensor that reads every third step and loses a reading now and then, as the
+  // controller's sampled sensor does: in between, the planner gets the last reading with its
+  // own position and current contacts (the view is from where the reading was taken).
+  const Environment env = test::room_with_cup();
+  RandomStream noise(7, 0, "stale-readings");
+  for (double range : {0.1, 0.5}) {
+    for (Vec2 goal : {Vec2{2.05, 1.6}, Vec2{3.0, 1.15}, Vec2{3.0, 2.0}, Vec2{5.5, 3.5}}) {
+      INFO("range " << range << ", goal (" << goal.x << ", " << goal.y << ")");
+      TangentBugParams p = TangentBugParams::for_environment(env.diameter(), boundary_length(env));
+      p.noise_margin = p.progress = 3.0 * 0.002;
+      TangentBug bug(p);
+      bug.set_goal(goal);
+      Vec2 x{0.3, 0.3};
+      SensorReading last;
+      PlanStatus status = PlanStatus::moving;
+      for (int k = 0; k < 20000 && status == PlanStatus::moving; ++k) {
+        if (k == 0 || (k % 3 == 0 && !noise.bernoulli(0.3))) {
+          last = sense(env, x, range);
+          add_range_noise(last, noise, 0.002, env.tolerance());
+        }
+        SensorReading now = last;
+        now.position = x;
+        now.contacts = contacts_at(env, x);
+        const PlanStep s = bug.step(now, 0.02);
+        const Vec2 next = env.advance(x, s.next);
+        REQUIRE(env.segment_inside(x, next));
+        x = next;
+        status = s.status;
+      }
+      if (env.contains(goal)) {
+        CHECK(status == PlanStatus::reached);
+      } else {
+        CHECK(status == PlanStatus::projected);
+        CHECK(distance(x, goal) <= distance(env.closest_point(goal), goal) + 6.0 * 0.002);
+      }
+    }
   }
 }
