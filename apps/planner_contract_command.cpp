@@ -19,6 +19,7 @@
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
 #include "core/atomic_file.hpp"
+#include "core/geometry/environment.hpp"
 #include "planners/planner_registry.hpp"
 
 namespace covsim::app {
@@ -127,6 +128,14 @@ void add_planner_contract_command(CLI::App& app) {
       throw InputError(
           fmt::format("planner-contract: --planner: unknown planner \"{}\" (registered: {})",
                       o->setup.planner, fmt::join(planner_registry().names(), ", ")));
+    }
+    // The contract is for planners that keep the robot in Ω; `none` drives through walls.
+    const Environment square({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {});
+    if (!make_planner(o->setup.planner, square)->avoids_obstacles()) {
+      throw InputError(fmt::format(
+          "planner-contract: --planner: planner \"{}\" does not avoid obstacles (it drives "
+          "through walls), and the contract checks planners that keep the robot in Ω",
+          o->setup.planner));
     }
     o->setup.range = parse_range(o->range);
     o->setup.family = o->family == "combs" ? CaseFamily::combs : CaseFamily::courses;

@@ -83,8 +83,14 @@ PlanStatus status_named(const std::string& s) {
 
 class PyPlanner final : public Planner {
  public:
-  PyPlanner(PyRef obj, std::string name) : obj_(std::move(obj)), name_(std::move(name)) {}
+  PyPlanner(PyRef obj, std::string name) : obj_(std::move(obj)), name_(std::move(name)) {
+    // Read once: the controller asks at every step.
+    py::gil_scoped_acquire gil;
+    if (py::hasattr(*obj_, "avoids_obstacles"))
+      avoids_obstacles_ = obj_->attr("avoids_obstacles").cast<bool>();
+  }
   std::string_view name() const override { return name_; }
+  bool avoids_obstacles() const override { return avoids_obstacles_; }
   void set_goal(Vec2 goal) override {
     py::gil_scoped_acquire gil;
     obj_->attr("set_goal")(to_array(goal));
@@ -103,6 +109,7 @@ class PyPlanner final : public Planner {
  private:
   PyRef obj_;
   std::string name_;
+  bool avoids_obstacles_ = true;
 };
 
 struct PyRobot {

@@ -134,3 +134,34 @@ def test_a_python_planner_may_keep_its_state_when_its_goal_moves():
     s.set("planner", {"type": "py_keeping"})
     assert covsim.Simulation(s).run()["converged"]
     assert calls["move"] > 0 and calls["set"] + calls["move"] == without
+
+
+class Through:
+    """A planner in Python that drives through walls, as the `none` baseline does."""
+
+    avoids_obstacles = False
+
+    def __init__(self, environment, params):
+        self.goal = None
+
+    def set_goal(self, goal):
+        self.goal = np.array(goal)
+
+    def step(self, reading, max_step):
+        x = reading.position
+        d = np.linalg.norm(self.goal - x)
+        if d <= max_step:
+            return self.goal, "reached"
+        return x + max_step * (self.goal - x) / d, "moving"
+
+
+def test_a_python_planner_that_drives_through_walls_ends_the_run_where_it_leaves(scenarios):
+    covsim.register_planner("py_through", Through)
+    s = covsim.Scenario.from_file(scenarios / "fig2d.json")
+    s.set("controller", {"type": "geodesic_lloyd"})
+    s.set("planner", {"type": "py_through"})
+    python = covsim.Simulation(s).run()
+    s.set("planner", {"type": "none"})
+    builtin = covsim.Simulation(s).run()
+    assert python["stop_reason"] == "left_environment"
+    assert python["left_environment"] == builtin["left_environment"]

@@ -59,6 +59,8 @@ bad("--set without =" "--set network.loss: expected PATH=VALUE" run ${u} --set n
     --out ${WORK}/no2)
 bad("--set with a bad path" "--set a..b=1: \"a..b\" is not a dotted path" run ${u} --set a..b=1
     --out ${WORK}/no3)
+bad("planner-contract of a planner through walls" "planner \"none\" does not avoid obstacles"
+    planner-contract --planner none --cases 1)
 bad("--seed -1" "--seed: expected a whole number" run ${u} --seed -1 --out ${WORK}/no4)
 bad("--seed 2^64" "--seed: expected a whole number" run ${u} --seed 18446744073709551616
     --out ${WORK}/no5)
