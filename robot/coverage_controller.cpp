@@ -167,10 +167,10 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     }
     Vec2 next = env_.advance(r.position, s.next);
     if (!r.planner->avoids_obstacles() && !(next == s.next)) {
-      // Out of Ω through ∂Ω by more than the position tolerance: the run ends with the robot
-      // where it crossed. A graze within the tolerance (a corner cut by a micrometre) is
-      // none: the robot goes on to a motion's end in Ω, or stops at the wall.
-      if (excursion(r.position, s.next) > tol_.position) {
+      // Out of Ω: a motion that ends in an obstacle, or cuts through one deeper than the
+      // position tolerance, ends the run with the robot where it crossed ∂Ω. A corner cut
+      // within the tolerance (by a micrometre) on the way to a point of Ω is a graze.
+      if (!env_.contains(s.next) || excursion(r.position, s.next) > tol_.position) {
         r.path_length += distance(r.position, next);
         r.position = next;
         state_->move(Generators::positions, i, next);
@@ -182,7 +182,7 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
         k.stop();
         return;
       }
-      if (env_.contains(s.next)) next = s.next;
+      next = s.next;
     }
     if (r.planner->avoids_obstacles() && !env_.segment_inside(r.position, next)) {
       throw std::logic_error(

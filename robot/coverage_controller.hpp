@@ -27,8 +27,9 @@
 // A planner that stalls while its target lies outside Ω is sent to the projection instead;
 // one that reports `projected` for a goal inside Ω stops the run (planner_failure()). The
 // world stops a motion at the wall it would cross (Environment::advance), except for a
-// planner that does not avoid obstacles (the `none` baseline): its motion out of Ω by more
-// than the position tolerance stops the run where it crosses ∂Ω (left_environment()). A
+// planner that does not avoid obstacles (the `none` baseline): its motion into an obstacle
+// (ending in one, or cutting through one deeper than the position tolerance) stops the run
+// where it crosses ∂Ω (left_environment()). A
 // motion that still leaves Ω is an internal error: it throws.
 #include <functional>
 #include <memory>
