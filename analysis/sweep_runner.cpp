@@ -402,7 +402,7 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
              : s.n == 1 ? fmt::format(",{},,", s.mean)
                         : fmt::format(",{},{},{}", s.mean, s.stddev, s.ci95);
       out += s.n == 0 ? ",,," : fmt::format(",{},{},{}", s.median, s.q1, s.q3);
-      // Modes need a sample to split: two or more runs on each side.
+      // Modes need a sample to split: at least kModesMinSample runs (analysis/statistics).
       const Modes modes = split_modes(xs);
       out += s.n < kModesMinSample ? ",,,,"
              : modes.bimodal ? fmt::format(",2,{},{},{}", modes.low_fraction, modes.low_median,

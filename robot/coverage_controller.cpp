@@ -135,10 +135,10 @@ Vec2 CoverageController::planner_goal(const Robot& r) const {
 }
 
 double CoverageController::excursion(Vec2 p, Vec2 q) const {
-  // The stretch outside Ω runs from where the motion leaves to where it comes back (or its
-  // end); the largest distance from Ω of its points, finely sampled, is the excursion.
+  // The stretch outside Ω runs from where the motion leaves to where it comes back; the
+  // largest distance from Ω of its points, finely sampled, is the excursion.
   const Vec2 out = env_.advance(p, q);
-  const Vec2 back = env_.contains(q) ? env_.advance(q, p) : q;
+  const Vec2 back = env_.advance(q, p);
   constexpr int kSamples = 32;
   double depth = 0.0;
   for (int k = 0; k <= kSamples; ++k) {
@@ -166,23 +166,13 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
           r.planner->name(), distance(r.position, s.next), k.now().seconds(), step_));
     }
     Vec2 next = env_.advance(r.position, s.next);
+    // Out of Ω: a motion that ends in an obstacle, or cuts through one deeper than the
+    // position tolerance, ends the run with the robot where it crossed ∂Ω. A corner cut
+    // within the tolerance (by a micrometre) on the way to a point of Ω is a graze.
+    bool departed = false;
     if (!r.planner->avoids_obstacles() && !(next == s.next)) {
-      // Out of Ω: a motion that ends in an obstacle, or cuts through one deeper than the
-      // position tolerance, ends the run with the robot where it crossed ∂Ω. A corner cut
-      // within the tolerance (by a micrometre) on the way to a point of Ω is a graze.
-      if (!env_.contains(s.next) || excursion(r.position, s.next) > tol_.position) {
-        r.path_length += distance(r.position, next);
-        r.position = next;
-        state_->move(Generators::positions, i, next);
-        view_->moved(i);
-        departure_ = LeftEnvironment{i, k.now(), r.goal, next};
-        k.fingerprint().fold_state(next.x);
-        k.fingerprint().fold_state(next.y);
-        if (observer_ != nullptr) observer_->on_motion(k.now(), r);
-        k.stop();
-        return;
-      }
-      next = s.next;
+      departed = !env_.contains(s.next) || excursion(r.position, s.next) > tol_.position;
+      if (!departed) next = s.next;
     }
     if (r.planner->avoids_obstacles() && !env_.segment_inside(r.position, next)) {
       throw std::logic_error(
@@ -193,6 +183,14 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     r.position = next;
     state_->move(Generators::positions, i, next);
     view_->moved(i);
+    if (departed) {
+      departure_ = LeftEnvironment{i, k.now(), r.goal, next};
+      k.fingerprint().fold_state(next.x);
+      k.fingerprint().fold_state(next.y);
+      if (observer_ != nullptr) observer_->on_motion(k.now(), r);
+      k.stop();
+      return;
+    }
     r.status = s.status;
     r.stable = false;
     if (s.status == PlanStatus::projected && env_.contains(r.goal)) {

@@ -117,7 +117,7 @@ class CoverageController {
   void loop1(std::uint32_t i);
   // The goal loop 1 hands robot r's planner under the projection policy.
   Vec2 planner_goal(const Robot& r) const;
-  // How deep a straight motion from p (in Ω) to q runs outside Ω (0 if it stays in).
+  // How deep a straight motion between p and q, both in Ω, runs outside Ω (0 if it stays in).
   double excursion(Vec2 p, Vec2 q) const;
   void set_goal(Robot& r, Vec2 goal);
   void loop2(Kernel& k, std::uint32_t i);
