@@ -7,8 +7,8 @@
 #include <string>
 
 #include "apps/commands.hpp"
-#include "core/geometry/geometry_error.hpp"
-#include "core/geometry/voronoi_partition.hpp"
+#include "geometry/geometry_error.hpp"
+#include "geometry/voronoi_partition.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
 

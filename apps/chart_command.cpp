@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "analysis/bar_chart.hpp"
-#include "analysis/line_chart.hpp"
+#include "analysis/figures/bar_chart.hpp"
+#include "analysis/figures/line_chart.hpp"
 #include "apps/commands.hpp"
 #include "apps/csv_table.hpp"
 #include "apps/input_error.hpp"
-#include "core/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 namespace covsim::app {
 

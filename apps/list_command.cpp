@@ -12,7 +12,7 @@
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
-#include "core/geometry/density_registry.hpp"
+#include "geometry/density_registry.hpp"
 #include "net/delay_registry.hpp"
 #include "net/loss_registry.hpp"
 #include "planners/planner_registry.hpp"

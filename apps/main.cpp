@@ -2,12 +2,12 @@
 #include <exception>
 #include <iostream>
 
-#include "analysis/provenance.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
-#include "core/interrupt.hpp"
 #include "core/trace.hpp"
+#include "io/interrupt.hpp"
 #include "scenarios/scenario_error.hpp"
+#include "sim/provenance.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"covsim: discrete-event simulation of multi-robot Voronoi coverage"};

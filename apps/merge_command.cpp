@@ -3,11 +3,14 @@
 // --out the same folder it redraws the plots (--format, --group) from the runs kept there.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "analysis/sweep_runner.hpp"
+#include "analysis/figures/sweep_charts.hpp"
+#include "analysis/sweep/sweep_folder.hpp"
+#include "analysis/sweep/sweep_runner.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 
@@ -33,11 +36,18 @@ void add_merge_command(CLI::App& app) {
     SweepSpec spec;
     std::vector<SweepResult> results;
     try {
-      results =
-          merge_sweeps(dirs, opts->out, spec, opts->group, *parse_figure_format(opts->format));
+      // --group is checked before anything is written.
+      if (!opts->group.empty() && !dirs.empty()) {
+        const SweepSpec first = sweep_from_json(read_sweep_folder(dirs.front()).sweep);
+        if (std::find(first.parameters.begin(), first.parameters.end(), opts->group) ==
+            first.parameters.end())
+          throw std::invalid_argument("--group: \"" + opts->group + "\" is not a swept parameter");
+      }
+      results = merge_sweeps(dirs, opts->out, spec);
     } catch (const std::exception& e) {  // runtime_error, or invalid_argument for --group
       throw InputError(e.what());
     }
+    write_sweep_plots(opts->out, spec, results, opts->group, *parse_figure_format(opts->format));
     fmt::print("merged {} runs from {} folders into {}/runs.csv and {}/summary.csv\n",
                results.size(), dirs.size(), opts->out, opts->out);
   });

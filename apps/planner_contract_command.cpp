@@ -1,8 +1,8 @@
 // `covsim planner-contract --planner NAME [--range R] [--noise S] [--family F] [--cases N]
-// [--seed N] [--jobs J]`: runs the planner contract suite (analysis/planner_contract) for a
-// soak, `--case I` for one case in detail, or `--ranges 0,0.5,2,inf` for the range effect
-// (the same cases at each range). Prints a summary and one reproducer line per failing
-// case; exit 1 if any case failed.
+// [--seed N] [--jobs J]`: runs the planner contract suite (analysis/contract/planner_contract) for
+// a soak, `--case I` for one case in detail, or `--ranges 0,0.5,2,inf` for the range effect (the
+// same cases at each range). Prints a summary and one reproducer line per failing case; exit 1 if
+// any case failed.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -14,12 +14,12 @@
 #include <memory>
 #include <string>
 
-#include "analysis/planner_contract.hpp"
+#include "analysis/contract/planner_contract.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
-#include "core/atomic_file.hpp"
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
+#include "io/atomic_file.hpp"
 #include "planners/planner_registry.hpp"
 
 namespace covsim::app {

@@ -8,14 +8,14 @@
 #include <memory>
 #include <string>
 
-#include "analysis/figures.hpp"
-#include "analysis/replay_html.hpp"
-#include "analysis/run_files.hpp"
-#include "analysis/run_video.hpp"
+#include "analysis/figures/figures.hpp"
+#include "analysis/figures/replay_html.hpp"
+#include "analysis/figures/run_video.hpp"
+#include "analysis/records/run_files.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
-#include "core/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 namespace covsim::app {
 

@@ -5,8 +5,8 @@
 
 #include <set>
 
-#include "analysis/plugin.hpp"
 #include "apps/input_error.hpp"
+#include "sim/plugin.hpp"
 
 namespace covsim::app {
 

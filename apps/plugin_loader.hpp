@@ -1,6 +1,6 @@
 #pragma once
 // --plugin FILE for the commands that read scenarios: loads shared libraries that register
-// components (analysis/plugin.hpp) before anything is parsed.
+// components (sim/plugin.hpp) before anything is parsed.
 #include <CLI/CLI.hpp>
 
 #include <string>

@@ -8,7 +8,7 @@
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/scenario_options.hpp"
-#include "core/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 #include "scenarios/random_environment.hpp"
 #include "scenarios/scenario.hpp"
 

@@ -5,10 +5,10 @@
 #include <memory>
 #include <string>
 
-#include "analysis/trace_replay.hpp"
 #include "apps/commands.hpp"
 #include "apps/plugin_loader.hpp"
 #include "core/fingerprint.hpp"
+#include "sim/trace_replay.hpp"
 
 namespace covsim::app {
 

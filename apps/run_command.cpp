@@ -8,22 +8,22 @@
 #include <memory>
 #include <string>
 
-#include "analysis/coverage_run.hpp"
-#include "analysis/figures.hpp"
-#include "analysis/final_json.hpp"
-#include "analysis/run_files.hpp"
-#include "analysis/run_progress.hpp"
-#include "analysis/run_recorder.hpp"
-#include "analysis/trace_replay.hpp"
+#include "analysis/figures/figures.hpp"
+#include "analysis/records/final_json.hpp"
+#include "analysis/records/run_files.hpp"
+#include "analysis/records/run_recorder.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
 #include "apps/scenario_options.hpp"
-#include "core/atomic_file.hpp"
 #include "core/fingerprint.hpp"
-#include "core/staged_folder.hpp"
 #include "core/trace.hpp"
+#include "io/atomic_file.hpp"
+#include "io/staged_folder.hpp"
 #include "scenarios/scenario_error.hpp"
+#include "sim/coverage_run.hpp"
+#include "sim/run_progress.hpp"
+#include "sim/trace_replay.hpp"
 
 namespace covsim::app {
 

@@ -8,7 +8,8 @@
 #include <string>
 #include <thread>
 
-#include "analysis/sweep_runner.hpp"
+#include "analysis/figures/sweep_charts.hpp"
+#include "analysis/sweep/sweep_runner.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"

@@ -3,7 +3,7 @@
 // varied shapes, and uniformly random generators in its free space.
 #include <vector>
 
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 
 namespace covsim::bench {
 

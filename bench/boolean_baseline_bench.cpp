@@ -8,8 +8,8 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_world.hpp"
-#include "core/geometry/convex_polygon.hpp"
-#include "core/geometry/delaunay.hpp"
+#include "geometry/convex_polygon.hpp"
+#include "geometry/delaunay.hpp"
 
 namespace {
 

@@ -2,9 +2,9 @@
 // environment, with mass, centroid and cost of every cell ∩ Ω.
 #include <benchmark/benchmark.h>
 
-#include "core/geometry/uniform_density.hpp"
 #include "bench/bench_world.hpp"
-#include "core/geometry/voronoi_partition.hpp"
+#include "geometry/uniform_density.hpp"
+#include "geometry/voronoi_partition.hpp"
 
 namespace {
 

@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <string>
 
-#include "analysis/coverage_run.hpp"
-#include "analysis/robot_track.hpp"
-#include "analysis/run_recorder.hpp"
+#include "analysis/records/robot_track.hpp"
+#include "analysis/records/run_recorder.hpp"
 #include "scenarios/random_environment.hpp"
 #include "scenarios/scenario.hpp"
+#include "sim/coverage_run.hpp"
 
 namespace {
 

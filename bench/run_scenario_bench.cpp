@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/coverage_run.hpp"
+#include "sim/coverage_run.hpp"
 
 namespace {
 

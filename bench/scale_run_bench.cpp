@@ -14,9 +14,9 @@
 
 #include <cmath>
 
-#include "analysis/coverage_run.hpp"
 #include "scenarios/random_environment.hpp"
 #include "scenarios/scenario.hpp"
+#include "sim/coverage_run.hpp"
 
 namespace {
 

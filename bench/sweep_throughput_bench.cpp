@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "analysis/sweep_runner.hpp"
+#include "analysis/sweep/sweep_runner.hpp"
 
 namespace {
 

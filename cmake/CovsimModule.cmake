@@ -1,7 +1,8 @@
 # covsim_add_module(NAME SOURCES ... DEPS ...)
-# One library per top-level folder, aliased covsim::NAME (exported under the same name).
-# Includes are rooted at the repository (installed: at include/covsim), so code says
-# #include "core/kernel.hpp" and the folder names the module.
+# One library per module folder (a top-level folder, or one of analysis/'s rooms), aliased
+# covsim::NAME (exported under the same name). Includes are rooted at the repository
+# (installed: at include/covsim), so code says #include "core/kernel.hpp" or
+# #include "analysis/sweep/sweep_runner.hpp" and the folder names the module.
 function(covsim_add_module name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_library(covsim_${name} STATIC ${ARG_SOURCES})
@@ -14,6 +15,7 @@ function(covsim_add_module name)
                                                   POSITION_INDEPENDENT_CODE ON)
   add_library(covsim::${name} ALIAS covsim_${name})
   set_property(GLOBAL APPEND PROPERTY COVSIM_MODULES covsim_${name})
-  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION include/covsim/${name}
+  file(RELATIVE_PATH folder ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION include/covsim/${folder}
           FILES_MATCHING PATTERN "*.hpp")
 endfunction()

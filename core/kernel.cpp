@@ -4,8 +4,8 @@
 #include <utility>
 
 #include "core/hash.hpp"
-#include "core/interrupt.hpp"
 #include "core/trace.hpp"
+#include "io/interrupt.hpp"
 
 namespace covsim {
 

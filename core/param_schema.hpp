@@ -15,7 +15,7 @@
 #include <variant>
 #include <vector>
 
-#include "core/geometry/vec2.hpp"
+#include "core/vec2.hpp"
 
 namespace covsim {
 

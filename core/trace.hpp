@@ -20,8 +20,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/atomic_file.hpp"
 #include "core/sim_time.hpp"
+#include "io/atomic_file.hpp"
 
 namespace covsim {
 

@@ -10,8 +10,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/geometry/environment.hpp"
 #include "core/sim_time.hpp"
+#include "geometry/environment.hpp"
 #include "net/delay_model.hpp"
 #include "net/loss_model.hpp"
 

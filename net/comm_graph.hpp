@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/geometry/vec2.hpp"
+#include "core/vec2.hpp"
 
 namespace covsim {
 

@@ -2,8 +2,8 @@
 // What a robot broadcasts: its state as of the send time.
 #include <cstdint>
 
-#include "core/geometry/vec2.hpp"
 #include "core/sim_time.hpp"
+#include "core/vec2.hpp"
 
 namespace covsim {
 

@@ -10,7 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/geometry/vec2.hpp"
+#include "core/vec2.hpp"
 
 namespace covsim {
 

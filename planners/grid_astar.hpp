@@ -11,7 +11,7 @@
 // vertices L* turns at (1.0824 = 1 / cos 22.5°, the octile metric's worst stretch).
 #include <memory>
 
-#include "core/geometry/occupancy_grid.hpp"
+#include "geometry/occupancy_grid.hpp"
 #include "planners/map_planner.hpp"
 #include "planners/planner_entry.hpp"
 

@@ -5,7 +5,7 @@
 // reports `stalled`.
 #include <optional>
 
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 #include "planners/path_follower.hpp"
 #include "planners/planner.hpp"
 

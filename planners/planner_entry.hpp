@@ -6,8 +6,8 @@
 #include <functional>
 #include <memory>
 
-#include "core/geometry/environment.hpp"
 #include "core/registry.hpp"
+#include "geometry/environment.hpp"
 #include "planners/planner.hpp"
 
 namespace covsim {
@@ -25,7 +25,7 @@ struct PlannerContext {
 // Builds one robot's planner.
 using PlannerSource = std::function<std::unique_ptr<Planner>()>;
 
-// One case of the planner contract suite (analysis/planner_contract), as a bound sees it.
+// One case of the planner contract suite (analysis/contract/planner_contract), as a bound sees it.
 struct PathBoundCase {
   const Planner& planner;  // as it ended the case
   const Environment& environment;

@@ -15,7 +15,7 @@
 // the goal as unreachable and sends the robot to its projection.
 #include <cstddef>
 
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 #include "planners/planner.hpp"
 #include "planners/planner_entry.hpp"
 

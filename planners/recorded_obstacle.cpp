@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/geometry/ring_validation.hpp"
+#include "geometry/ring_validation.hpp"
 
 namespace covsim {
 

@@ -6,7 +6,7 @@
 // projection) is the closest recorded boundary point.
 #include <vector>
 
-#include "core/geometry/vec2.hpp"
+#include "core/vec2.hpp"
 
 namespace covsim {
 

@@ -6,8 +6,8 @@
 // obstacle is for the planner to infer from geometry.
 #include <vector>
 
-#include "core/geometry/visibility.hpp"
 #include "core/random_stream.hpp"
+#include "geometry/visibility.hpp"
 
 namespace covsim {
 

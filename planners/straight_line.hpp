@@ -7,7 +7,7 @@
 //   of the paper's Section II do (Fig. 2d: "the robot happens to leave the region"): its
 //   motion may leave Ω, and the controller then ends the run where it would leave (stop
 //   reason `left_environment`). It reports `reached` at the goal and is `moving` until then.
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 #include "planners/planner.hpp"
 #include "planners/planner_entry.hpp"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 
 namespace covsim {
 

@@ -3,7 +3,7 @@
 // reflex vertices (one graph per environment, shared by every robot's planner).
 #include <memory>
 
-#include "core/geometry/visibility_graph.hpp"
+#include "geometry/visibility_graph.hpp"
 #include "planners/map_planner.hpp"
 #include "planners/planner_entry.hpp"
 

@@ -7,7 +7,7 @@
 // - The neighbour view (ideal_view.hpp, networked_view.hpp) says what a robot knows.
 // - The sensor model (sensor_model.hpp) says what its planner senses.
 // - The planner (planners/) moves it.
-// Metrics are observers in analysis/ that read the controller's const state.
+// Metrics are observers in sim/ that read the controller's const state.
 //
 // Loop 1 (event "loop1", class 0), for robot i once its view is ready: the law's target
 // becomes the virtual target; outside Ω (an obstacle boundary Voronoi region) the real target

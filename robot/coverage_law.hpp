@@ -9,9 +9,9 @@
 #include <optional>
 #include <vector>
 
-#include "core/geometry/cell_integrator.hpp"
-#include "core/geometry/voronoi_partition.hpp"
 #include "core/registry.hpp"
+#include "geometry/cell_integrator.hpp"
+#include "geometry/voronoi_partition.hpp"
 #include "robot/own_cell_cache.hpp"
 #include "robot/robot.hpp"
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/geometry/voronoi_partition.hpp"
+#include "geometry/voronoi_partition.hpp"
 #include "robot/coverage_law.hpp"
 
 namespace covsim {

@@ -8,7 +8,7 @@
 #include <memory>
 #include <optional>
 
-#include "core/geometry/geodesic_partition.hpp"
+#include "geometry/geodesic_partition.hpp"
 #include "robot/coverage_law.hpp"
 
 namespace covsim {

@@ -8,8 +8,8 @@
 #include <span>
 #include <vector>
 
-#include "core/geometry/cell_integrator.hpp"
-#include "core/geometry/convex_polygon.hpp"
+#include "geometry/cell_integrator.hpp"
+#include "geometry/convex_polygon.hpp"
 
 namespace covsim {
 

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/geometry/vec2.hpp"
+#include "core/vec2.hpp"
 #include "scenarios/scenario_error.hpp"
 
 namespace covsim {

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "core/geometry/ring_validation.hpp"
 #include "core/random_stream.hpp"
+#include "geometry/ring_validation.hpp"
 
 namespace covsim {
 

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 
 namespace covsim {
 

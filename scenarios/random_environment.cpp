@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/geometry/environment.hpp"
 #include "core/random_stream.hpp"
+#include "geometry/environment.hpp"
 #include "robot/coverage_config.hpp"
 #include "scenarios/run_limits.hpp"
 

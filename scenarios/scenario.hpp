@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/geometry/density.hpp"
-#include "core/geometry/environment.hpp"
+#include "geometry/density.hpp"
+#include "geometry/environment.hpp"
 #include "robot/coverage_config.hpp"
 #include "scenarios/recording_config.hpp"
 #include "scenarios/run_limits.hpp"

@@ -4,7 +4,7 @@
 #include <optional>
 #include <utility>
 
-#include "core/geometry/density_registry.hpp"
+#include "geometry/density_registry.hpp"
 #include "net/delay_registry.hpp"
 #include "net/loss_registry.hpp"
 #include "planners/planner_registry.hpp"

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/geometry/cell_integrator.hpp"
-#include "core/geometry/density_registry.hpp"
-#include "core/geometry/geometry_error.hpp"
-#include "core/geometry/placement.hpp"
-#include "core/geometry/ring_validation.hpp"
 #include "core/random_stream.hpp"
+#include "geometry/cell_integrator.hpp"
+#include "geometry/density_registry.hpp"
+#include "geometry/geometry_error.hpp"
+#include "geometry/placement.hpp"
+#include "geometry/ring_validation.hpp"
 #include "net/delay_registry.hpp"
 #include "net/loss_registry.hpp"
 #include "planners/planner_registry.hpp"

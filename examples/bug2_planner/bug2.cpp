@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 #include "planners/local_tangent_graph.hpp"
 
 namespace example {

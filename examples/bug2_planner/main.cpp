@@ -4,11 +4,11 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "analysis/coverage_run.hpp"
-#include "analysis/planner_contract.hpp"
-#include "analysis/plugin.hpp"
+#include "analysis/contract/planner_contract.hpp"
 #include "bug2.hpp"
 #include "scenarios/scenario.hpp"
+#include "sim/coverage_run.hpp"
+#include "sim/plugin.hpp"
 
 int main(int argc, char** argv) {
   if (argc < 2) {

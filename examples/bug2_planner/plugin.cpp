@@ -1,6 +1,6 @@
 // The plugin route: `covsim run SCENARIO --plugin libbug2_plugin.so` with
 // "planner": {"type": "bug2"} in the scenario.
-#include "analysis/plugin.hpp"
+#include "sim/plugin.hpp"
 #include "bug2.hpp"
 
 namespace {

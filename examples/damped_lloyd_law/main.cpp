@@ -5,9 +5,9 @@
 #include <fstream>
 #include <iostream>
 
-#include "analysis/plugin.hpp"
-#include "analysis/sweep_runner.hpp"
+#include "analysis/sweep/sweep_runner.hpp"
 #include "damped_lloyd.hpp"
+#include "sim/plugin.hpp"
 
 int main(int argc, char** argv) {
   if (argc < 3) {

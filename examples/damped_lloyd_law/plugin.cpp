@@ -1,6 +1,6 @@
 // The plugin route: `covsim run SCENARIO --plugin libdamped_lloyd_plugin.so` with
 // "controller": {"type": "damped_lloyd", "gain": 0.5} in the scenario.
-#include "analysis/plugin.hpp"
+#include "sim/plugin.hpp"
 #include "damped_lloyd.hpp"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/geometry/vec2.hpp"
+#include "core/vec2.hpp"
 
 namespace covsim::python {
 

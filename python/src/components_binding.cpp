@@ -6,7 +6,7 @@
 
 #include <set>
 
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 #include "geometry_binding.hpp"
 #include "planners/planner_registry.hpp"
 #include "robot/coverage_law_registry.hpp"

@@ -2,7 +2,7 @@
 // without a run.
 #include <pybind11/stl.h>
 
-#include "core/geometry/voronoi_partition.hpp"
+#include "geometry/voronoi_partition.hpp"
 #include "geometry_binding.hpp"
 #include "scenario_binding.hpp"
 

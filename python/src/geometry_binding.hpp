@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "bindings.hpp"
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 
 namespace covsim::python {
 

@@ -4,12 +4,12 @@
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
-#include "analysis/result_fields.hpp"
-#include "analysis/simulation.hpp"
-#include "analysis/timed_planner.hpp"
+#include "analysis/records/result_fields.hpp"
 #include "core/fingerprint.hpp"
 #include "planners/tangent_bug.hpp"
 #include "scenario_binding.hpp"
+#include "sim/simulation.hpp"
+#include "sim/timed_planner.hpp"
 
 namespace covsim::python {
 

@@ -2,8 +2,8 @@
 // them (pandas DataFrames, numpy arrays).
 #include <pybind11/stl.h>
 
-#include "analysis/result_fields.hpp"
-#include "analysis/sweep_runner.hpp"
+#include "analysis/records/result_fields.hpp"
+#include "analysis/sweep/sweep_runner.hpp"
 #include "scenario_binding.hpp"
 
 namespace covsim::python {

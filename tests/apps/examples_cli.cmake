@@ -17,7 +17,7 @@ endfunction()
 
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
 foreach(f bin/covsim lib/cmake/covsim/covsimConfig.cmake include/covsim/core/version.hpp
-          include/covsim/analysis/plugin.hpp lib/libcovsim_core.a)
+          include/covsim/sim/plugin.hpp lib/libcovsim_core.a)
   if(NOT EXISTS ${prefix}/${f})
     message(FATAL_ERROR "the installation lacks ${f}")
   endif()

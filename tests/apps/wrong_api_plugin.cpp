@@ -1,5 +1,5 @@
 // A plugin built for another plugin API version: covsim must refuse it, naming both.
-#include "analysis/plugin.hpp"
+#include "sim/plugin.hpp"
 
 extern "C" int covsim_plugin_api_version() {
   return covsim::kPluginApiVersion + 98;

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/geometry/geometry_error.hpp"
+#include "geometry/geometry_error.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/scenario_error.hpp"

@@ -3,7 +3,7 @@
 // a room with an obstacle, a comb-shaped room.
 #include <vector>
 
-#include "core/geometry/environment.hpp"
+#include "geometry/environment.hpp"
 
 namespace covsim::test {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <memory>
 
-#include "core/geometry/occupancy_grid.hpp"
-#include "core/geometry/visibility_graph.hpp"
+#include "geometry/occupancy_grid.hpp"
+#include "geometry/visibility_graph.hpp"
 #include "planners/grid_astar.hpp"
 #include "planners/planner_registry.hpp"
 #include "planners/planner_run.hpp"

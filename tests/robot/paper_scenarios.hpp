@@ -5,8 +5,8 @@
 #include <memory>
 #include <string>
 
-#include "analysis/coverage_run.hpp"
 #include "scenarios/scenario.hpp"
+#include "sim/coverage_run.hpp"
 
 namespace covsim::test {
 

@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "analysis/coverage_run.hpp"
-#include "core/geometry/visibility_graph.hpp"
+#include "geometry/visibility_graph.hpp"
 #include "net/bernoulli_loss.hpp"
 #include "scenarios/scenario.hpp"
+#include "sim/coverage_run.hpp"
 #include "tests/robot/paper_scenarios.hpp"
 
 using namespace covsim;

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <map>
 
-#include "analysis/coverage_run.hpp"
 #include "core/fingerprint.hpp"
-#include "core/geometry/uniform_density.hpp"
+#include "geometry/uniform_density.hpp"
 #include "scenarios/scenario.hpp"
+#include "sim/coverage_run.hpp"
 #include "tests/robot/paper_scenarios.hpp"
 
 using namespace covsim;

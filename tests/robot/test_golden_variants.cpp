@@ -9,10 +9,10 @@
 
 #include <fstream>
 
-#include "analysis/coverage_run.hpp"
 #include "core/fingerprint.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/scenario_description.hpp"
+#include "sim/coverage_run.hpp"
 
 using namespace covsim;
 

@@ -9,8 +9,8 @@
 #include <map>
 #include <set>
 
-#include "analysis/final_json.hpp"
-#include "core/geometry/visibility_graph.hpp"
+#include "analysis/records/final_json.hpp"
+#include "geometry/visibility_graph.hpp"
 #include "net/bernoulli_loss.hpp"
 #include "planners/planner_registry.hpp"
 #include "planners/planner_run.hpp"

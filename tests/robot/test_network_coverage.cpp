@@ -2,13 +2,13 @@
 
 #include <cmath>
 
-#include "analysis/coverage_run.hpp"
-#include "analysis/metrics_sampler.hpp"
-#include "analysis/network_metrics.hpp"
-#include "analysis/result_fields.hpp"
-#include "core/geometry/uniform_density.hpp"
+#include "analysis/records/result_fields.hpp"
 #include "core/random_stream.hpp"
+#include "geometry/uniform_density.hpp"
 #include "scenarios/scenario.hpp"
+#include "sim/coverage_run.hpp"
+#include "sim/metrics_sampler.hpp"
+#include "sim/network_metrics.hpp"
 #include "tests/robot/paper_scenarios.hpp"
 
 using namespace covsim;

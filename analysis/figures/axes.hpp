@@ -1,0 +1,32 @@
+#pragma once
+// A data rectangle mapped onto a rectangle of a picture, with its frame, ticks and labels:
+// the scene's axes in metres and every chart's.
+#include <string_view>
+
+#include "analysis/figures/canvas.hpp"
+
+namespace covsim {
+
+// A tick step of 1, 2 or 5 times a power of ten, giving about `ticks` ticks over `range`.
+double tick_step(double range, int ticks);
+
+struct Axes {
+  Box data;            // x and y ranges in data units
+  Vec2 lo, hi;         // the picture rectangle: lo top-left, hi bottom-right
+  bool log_y = false;  // y on a base-10 log scale (data.lo.y > 0)
+  bool log_x = false;  // x on a base-10 log scale (data.lo.x > 0)
+  Vec2 to_px(Vec2 d) const;
+  double px_per_unit() const { return (hi.x - lo.x) / (data.hi.x - data.lo.x); }
+};
+
+// Axes over `data` rounded out to ticks (to decades on a log axis), filling the picture
+// rectangle.
+Axes chart_axes(Box data, Vec2 lo, Vec2 hi, bool log_y = false, bool log_x = false);
+// Axes for a map: x and y in the same scale, `data` centred in the picture rectangle.
+Axes map_axes(Box data, Vec2 lo, Vec2 hi);
+
+// The frame, light grid lines (if `grid`), ticks with their values, and the labels.
+void draw_axes(Canvas& c, const Axes& a, std::string_view x_label, std::string_view y_label,
+               bool grid);
+
+}  // namespace covsim

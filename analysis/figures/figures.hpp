@@ -1,0 +1,45 @@
+#pragma once
+// The pictures of a run, next to which the paper's Figures 3 and 4 can be put, in SVG, PDF
+// or PNG through the one drawing path (Canvas).
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "analysis/figures/canvas.hpp"
+#include "analysis/records/robot_track.hpp"
+#include "sim/coverage_run.hpp"
+#include "sim/metrics_sample.hpp"
+
+namespace covsim {
+
+struct SceneOptions {
+  std::string title;                                     // empty: from the scenario's name
+  std::optional<std::pair<double, double>> time_window;  // [t0, t1] s; unset: the whole run
+  std::vector<std::uint32_t> robots;                     // the robots drawn; empty: all
+};
+
+// Ω with its obstacles (grey), the density as a colour map with its bar, each robot's path
+// in its colour from its start (hollow circle) to its end (filled, with its ID), its virtual
+// generator's path (thin, dashed) and final position (square), the virtual targets
+// (crosses), projected real targets (yellow crosses), the last partitions of the virtual
+// generators (blue) and of the real positions (red, dashed); axes in metres, a scale bar, a
+// legend and a title. With a time window the paths are those of the window and the robots
+// stand where they were at its end.
+std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcome,
+                         const std::vector<RobotTrack>& tracks, const SceneOptions& options,
+                         const FigureFile& file);
+
+// The cost H of the real and the virtual generators over time, the convergence time marked.
+std::string cost_figure(const std::vector<MetricsSample>& samples, const CoverageOutcome& outcome,
+                        bool log_y, const FigureFile& file);
+
+// A scenario's display name: its file's stem ("office" for scenarios/office.json).
+std::string scenario_name(const std::string& source);
+
+// Whether a file name in a run folder is what `covsim run` or `covsim plot` writes there: a
+// record (analysis/records' is_record_file), a scene.* or cost.* figure, or replay.html. A
+// new run into the folder replaces these, and keeps anything else.
+bool is_run_output(const std::string& name);
+
+}  // namespace covsim

@@ -1,0 +1,37 @@
+#pragma once
+// A line chart: series of (x, y) with an optional band [lo, hi] around each line and the
+// individual runs as faint dots, drawn through the Canvas in any figure format.
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "analysis/figures/canvas.hpp"
+
+namespace covsim {
+
+struct ChartPoint {
+  double x, y;
+  double lo = 0.0, hi = 0.0;  // the band; ignored unless the series has one
+};
+struct ChartSeries {
+  std::string label;
+  std::vector<ChartPoint> points;
+  bool band = false;
+  bool dashed = false;
+  // Individual observations (one per run), drawn as faint dots under the line.
+  std::vector<std::pair<double, double>> samples;
+};
+
+struct LineChart {
+  std::string title, x_label, y_label;
+  std::vector<ChartSeries> series;
+  bool log_y = false;
+  bool log_x = false;  // points with x <= 0 are not drawn on a log x axis
+  // A vertical line marking an x (the convergence time, say), with its label.
+  std::optional<std::pair<double, std::string>> marker;
+};
+
+std::string draw_line_chart(const LineChart& chart, const FigureFile& file);
+
+}  // namespace covsim

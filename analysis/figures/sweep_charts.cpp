@@ -1,0 +1,114 @@
+#include "analysis/figures/sweep_charts.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "analysis/records/result_fields.hpp"
+#include "analysis/sweep/statistics.hpp"
+#include "analysis/sweep/sweep_tables.hpp"
+#include "io/atomic_file.hpp"
+#include "scenarios/scenario_description.hpp"
+
+namespace covsim {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string run_field_unit(const std::string& name) {
+  for (const auto& f : run_fields()) {
+    if (f.name == name) return f.unit;
+  }
+  return "";
+}
+}  // namespace
+
+std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<SweepResult>& results,
+                                     const std::string& group) {
+  std::optional<std::size_t> group_index;
+  for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
+    if (spec.parameters[q] == group) group_index = q;
+  }
+  if (!group.empty() && !group_index) {
+    throw std::invalid_argument("--group: \"" + group + "\" is not a swept parameter");
+  }
+  std::vector<SweepChart> charts;
+  const std::vector<SweepRun> runs = spec.runs();
+  // Parameters that take more than one value: only these name the lines.
+  std::vector<bool> varies(spec.parameters.size(), false);
+  for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
+    for (const auto& s : spec.settings)
+      varies[q] = varies[q] || s[q] != spec.settings.front()[q];
+  }
+  for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
+    // Only parameters that are numbers and take at least two values make an x axis; null
+    // (an unlimited value, such as an infinite sensor range) is left off the axis.
+    bool numeric = true;
+    std::set<double> values;
+    for (const auto& s : spec.settings) {
+      numeric = numeric && (s[p].is_number() || s[p].is_null());
+      if (numeric && s[p].is_number()) values.insert(s[p].get<double>());
+    }
+    if (!numeric || values.size() < 2 || (group_index && *group_index == p)) continue;
+    for (const std::string& metric : sweep_metrics()) {
+      if (metric == "wall_time") continue;
+      // One line per value of the grouping parameter (pooling the others), or else per
+      // combination of the other varying parameters; points at this parameter's values.
+      std::map<std::string, std::map<double, std::vector<double>>> lines;
+      for (const SweepResult& r : results) {
+        const SweepRun& run = runs.at(r.index);
+        if (r.error || run.values[p].is_null()) continue;
+        const double y = r.number(metric);
+        if (std::isnan(y)) continue;  // not taken by that run
+        std::string label;
+        for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
+          const bool names_line = group_index ? q == *group_index : varies[q];
+          if (q != p && names_line)
+            label +=
+                (label.empty() ? "" : ", ") + spec.parameters[q] + " = " + csv_value(run.values[q]);
+        }
+        lines[label.empty() ? "mean over seeds" : label][run.values[p].get<double>()].push_back(y);
+      }
+      std::vector<ChartSeries> series;
+      for (const auto& [label, points] : lines) {
+        ChartSeries s{label, {}, true, false, {}};
+        for (const auto& [x, ys] : points) {
+          const SampleSummary sum = summarize_sample(ys);
+          s.points.push_back({x, sum.mean, sum.mean - sum.ci95, sum.mean + sum.ci95});
+          for (double y : ys)
+            s.samples.emplace_back(x, y);
+        }
+        series.push_back(std::move(s));
+      }
+      const auto with_unit = [](const std::string& name, const std::string& unit) {
+        return unit.empty() ? name : fmt::format("{} [{}]", name, unit);
+      };
+      LineChart chart;
+      chart.title = fmt::format("{} (mean, 95% confidence band; dots: runs)", metric);
+      chart.x_label = with_unit(spec.parameters[p], scenario_key_unit(spec.parameters[p]));
+      chart.y_label = with_unit(metric, run_field_unit(metric));
+      chart.series = std::move(series);
+      charts.push_back({fmt::format("{}_vs_{}", metric, spec.parameters[p]), std::move(chart)});
+    }
+  }
+  return charts;
+}
+
+std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& spec,
+                                        const std::vector<SweepResult>& results,
+                                        const std::string& group, FigureFormat format) {
+  std::vector<fs::path> written;
+  for (const SweepChart& c : sweep_charts(spec, results, group)) {
+    const fs::path file = dir / fmt::format("{}.{}", c.name, extension(format));
+    AtomicFile f(file);
+    f.stream() << draw_line_chart(c.chart, FigureFile{format, 0});
+    f.commit();
+    written.push_back(file);
+  }
+  return written;
+}
+
+}  // namespace covsim

@@ -1,0 +1,31 @@
+#pragma once
+// A sweep's charts: one per (measure, numeric swept parameter), named
+// "<measure>_vs_<parameter>": the mean with a 95% confidence band and the runs as dots, one
+// line per value of `group` (a swept parameter; the others pooled), or without one, per
+// combination of the other varying parameters.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/figures/canvas.hpp"
+#include "analysis/figures/line_chart.hpp"
+#include "analysis/sweep/sweep_result.hpp"
+#include "analysis/sweep/sweep_spec.hpp"
+
+namespace covsim {
+
+struct SweepChart {
+  std::string name;
+  LineChart chart;
+};
+// Throws std::invalid_argument for a group that is not swept.
+std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<SweepResult>& results,
+                                     const std::string& group = "");
+// The charts drawn as DIR/<name>.svg (or .pdf, .png). Returns the files written.
+std::vector<std::filesystem::path> write_sweep_plots(const std::filesystem::path& dir,
+                                                     const SweepSpec& spec,
+                                                     const std::vector<SweepResult>& results,
+                                                     const std::string& group = "",
+                                                     FigureFormat format = FigureFormat::svg);
+
+}  // namespace covsim

@@ -1,0 +1,67 @@
+#include "analysis/sweep/sweep_folder.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+#include "io/atomic_file.hpp"
+#include "sim/provenance.hpp"
+
+namespace covsim {
+
+namespace fs = std::filesystem;
+
+SweepFolderRecord read_sweep_folder(const fs::path& dir) {
+  const fs::path file = dir / "sweep.json";
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(dir.string() + ": not a sweep folder (no sweep.json)");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::runtime_error(file.string() + ": " + e.what());
+  }
+  if (!j.is_object()) throw std::runtime_error(file.string() + ": expected a JSON object");
+  SweepFolderRecord r;
+  r.provenance = j.contains("provenance") ? j.at("provenance") : nlohmann::json::object();
+  j.erase("provenance");
+  r.sweep = std::move(j);
+  return r;
+}
+
+void write_sweep_folder(const fs::path& dir, const SweepFolderRecord& record) {
+  nlohmann::json j = record.sweep;
+  j["provenance"] = record.provenance;
+  AtomicFile f(dir / "sweep.json");
+  f.stream() << j.dump() << '\n';
+  f.commit();
+}
+
+void claim_sweep_folder(const SweepSpec& spec, const fs::path& dir) {
+  const nlohmann::json resolved = to_json(spec);
+  if (!fs::exists(dir / "sweep.json")) {
+    write_sweep_folder(dir, {resolved, this_build()});
+    return;
+  }
+  SweepFolderRecord held;
+  try {
+    held = read_sweep_folder(dir);
+  } catch (const std::runtime_error&) {
+    // unreadable: not this sweep's either
+  }
+  if (held.sweep != resolved) {
+    throw std::runtime_error(dir.string() +
+                             " holds results of a different sweep; use another output folder");
+  }
+  // Continued by a build other than the one that started it: its runs.csv will mix both.
+  const std::vector<std::string> diffs = build_differences(held.provenance);
+  if (diffs.empty()) return;
+  fmt::print(stderr,
+             "covsim: warning: {} was started by a different build; its results will mix "
+             "builds:\n",
+             dir.string());
+  for (const std::string& d : diffs)
+    fmt::print(stderr, "  {}\n", d);
+}
+
+}  // namespace covsim

@@ -1,0 +1,210 @@
+#include "analysis/sweep/sweep_runner.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "analysis/records/result_fields.hpp"
+#include "analysis/sweep/sweep_folder.hpp"
+#include "io/atomic_file.hpp"
+#include "io/interrupt.hpp"
+#include "sim/coverage_run.hpp"
+#include "sim/metrics_sampler.hpp"
+#include "sim/provenance.hpp"
+
+namespace covsim {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// One run, sampled for its communication measures; with keep_series its samples are kept as
+// DIR/runs/<index>.metrics.csv.
+SweepResult execute(const SweepSpec& spec, const SweepRun& run, const fs::path& dir,
+                    bool keep_series) {
+  SweepResult r;
+  r.index = run.index;
+  const auto start = std::chrono::steady_clock::now();
+  RunMeasures m;
+  try {
+    const Scenario s =
+        parse_scenario(spec.scenario_for(run), fmt::format("{} (run {})", spec.source, run.index),
+                       spec.scenario_dir);
+    MetricsSampler sampler;
+    m.outcome = run_coverage(s, &sampler);
+    m.communication = summarize_communication(sampler.samples());
+    if (keep_series) {
+      AtomicFile series(dir / "runs" / fmt::format("{}.metrics.csv", run.index));
+      series.stream() << csv_header(metrics_fields()) << '\n';
+      for (const MetricsSample& sample : sampler.samples())
+        series.stream() << csv_row(metrics_fields(), sample) << '\n';
+      series.commit();
+    }
+  } catch (const Interrupted&) {
+    throw;  // the run is abandoned, not failed: a resumed sweep runs it again
+  } catch (const std::exception& e) {
+    r.error = e.what();
+  }
+  m.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!r.error) {
+    for (const auto& f : run_fields())
+      r.values[f.name] = f.get(m);
+  } else {
+    r.values["wall_time"] = m.wall_time;
+  }
+  return r;
+}
+
+// Progress on stderr: one line rewritten in place on a terminal, else one line per run.
+class ProgressLine {
+ public:
+  ProgressLine(bool on, std::size_t total, std::size_t done_before)
+      : on_(on), tty_(isatty(STDERR_FILENO) != 0), total_(total), before_(done_before) {}
+  void report(std::size_t finished, std::size_t failed) const {
+    if (!on_) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const std::size_t ran = finished - before_;
+    const double left =
+        ran > 0 ? elapsed / static_cast<double>(ran) * static_cast<double>(total_ - finished) : 0.0;
+    const std::string line = fmt::format("sweep: {}/{} runs done, {} failed, about {:.0f} s left",
+                                         finished, total_, failed, left);
+    if (tty_)
+      fmt::print(stderr, "\r{:<70}", line);
+    else
+      fmt::print(stderr, "{}\n", line);
+  }
+  void finish() const {
+    if (on_ && tty_) fmt::print(stderr, "\n");
+  }
+
+ private:
+  bool on_, tty_;
+  std::size_t total_, before_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
+                                   const SweepOptions& options) {
+  fs::create_directories(dir / "runs");
+  claim_sweep_folder(spec, dir);
+  // This shard's runs; those whose results the folder holds are done.
+  std::vector<SweepRun> mine;
+  for (const SweepRun& r : spec.runs()) {
+    if (r.index % options.shards == options.shard) mine.push_back(r);
+  }
+  std::vector<SweepResult> results(mine.size());
+  std::vector<std::size_t> todo;
+  std::size_t failed = 0;
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    if (auto done = read_result(dir, mine[k].index)) {
+      results[k] = *done;
+      failed += done->error ? 1 : 0;
+    } else {
+      todo.push_back(k);
+    }
+  }
+  std::size_t finished = mine.size() - todo.size();
+  const ProgressLine progress(options.progress, mine.size(), finished);
+  // The workers take the runs to do in order; an interrupt stops every worker after its
+  // current event, and the runs done are kept.
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::exception_ptr interrupted;
+  auto worker = [&] {
+    for (std::size_t t = next++; t < todo.size(); t = next++) {
+      const std::size_t k = todo[t];
+      SweepResult r;
+      try {
+        r = execute(spec, mine[k], dir, options.keep_series);
+      } catch (const Interrupted&) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!interrupted) interrupted = std::current_exception();
+        next = todo.size();
+        return;
+      }
+      try {
+        write_result(dir, r);
+      } catch (const std::exception& e) {  // a full disk, say: this run's error
+        r.error = fmt::format("cannot write its result: {}", e.what());
+        r.values.clear();
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      results[k] = std::move(r);
+      ++finished;
+      failed += results[k].error ? 1 : 0;
+      progress.report(finished, failed);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t j = 1; j < std::max<std::size_t>(1, options.jobs); ++j)
+    threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads)
+    t.join();
+  progress.finish();
+  if (interrupted) std::rethrow_exception(interrupted);
+  return results;
+}
+
+std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const fs::path& out,
+                                      SweepSpec& merged) {
+  if (dirs.empty()) throw std::runtime_error("nothing to merge");
+  // One sweep in every folder; builds that differ are named.
+  const SweepFolderRecord first = read_sweep_folder(dirs.front());
+  for (const fs::path& d : dirs) {
+    const SweepFolderRecord held = read_sweep_folder(d);
+    if (held.sweep != first.sweep)
+      throw std::runtime_error(d.string() + " holds a different sweep from " +
+                               dirs.front().string());
+    const std::vector<std::string> diffs = build_differences(first.provenance, held.provenance);
+    if (diffs.empty()) continue;
+    fmt::print(stderr, "covsim: warning: {} and {} were run by different builds:\n",
+               dirs.front().string(), d.string());
+    for (const std::string& line : diffs)
+      fmt::print(stderr, "  {}\n", line);
+  }
+  merged = sweep_from_json(first.sweep);
+  // Every run's result from the first folder that holds it.
+  const std::size_t total = merged.runs().size();
+  std::vector<SweepResult> results;
+  std::size_t missing = 0;
+  for (std::size_t i = 0; i < total; ++i) {
+    std::optional<SweepResult> r;
+    for (std::size_t k = 0; k < dirs.size() && !r; ++k)
+      r = read_result(dirs[k], i);
+    if (r)
+      results.push_back(*r);
+    else
+      ++missing;
+  }
+  if (missing > 0)
+    throw std::runtime_error(
+        fmt::format("{} of {} runs are in none of the folders", missing, total));
+  fs::create_directories(out / "runs");
+  for (const SweepResult& r : results)
+    write_result(out, r);
+  // Series kept with --keep-series come along.
+  for (const fs::path& d : dirs) {
+    for (std::size_t i = 0; i < total; ++i) {
+      const fs::path series = d / "runs" / fmt::format("{}.metrics.csv", i);
+      std::error_code ec;
+      if (fs::exists(series, ec) && !fs::equivalent(d, out, ec))
+        fs::copy_file(series, out / "runs" / series.filename(),
+                      fs::copy_options::overwrite_existing, ec);
+    }
+  }
+  write_sweep_folder(out, first);
+  write_runs_csv(out / "runs.csv", merged, results);
+  write_summary_csv(out / "summary.csv", merged, results);
+  return results;
+}
+
+}  // namespace covsim

@@ -1,0 +1,214 @@
+#include "analysis/sweep/sweep_spec.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "scenarios/json_reader.hpp"
+#include "scenarios/scenario.hpp"
+#include "scenarios/scenario_error.hpp"
+#include "scenarios/scenario_override.hpp"
+
+namespace covsim {
+
+namespace {
+
+// Loads every setting's scenario once (with the first seed) before anything runs: a typo in a
+// path or a bad value is one error, at the value in the sweep file that caused it.
+void validate_settings(const SweepSpec& spec, const std::vector<std::string>& list_paths,
+                       std::size_t grid_parameters, std::size_t zip_rows) {
+  const auto under = [](const std::string& a, const std::string& b) {
+    return a.size() >= b.size() && a.compare(0, b.size(), b) == 0 &&
+           (a.size() == b.size() || a[b.size()] == '.' || a[b.size()] == '[');
+  };
+  for (std::size_t k = 0; k < spec.settings.size(); ++k) {
+    const SweepRun run{0, k, spec.seeds.front(), spec.settings[k]};
+    try {
+      parse_scenario(spec.scenario_for(run), spec.source + " (the scenario)", spec.scenario_dir);
+    } catch (const ScenarioError& e) {
+      for (std::size_t p = spec.parameters.size(); p-- > 0;) {
+        const std::string at = "$." + spec.parameters[p];
+        if (e.path().empty() || !(under(e.path(), at) || (e.path() != "$" && under(at, e.path()))))
+          continue;
+        // The value's place in its list: a zip row is the innermost index; a grid list has
+        // no repeats.
+        std::size_t index = k % std::max<std::size_t>(zip_rows, 1);
+        if (p < grid_parameters) {
+          std::vector<nlohmann::json> seen;
+          for (const auto& setting : spec.settings) {
+            if (std::find(seen.begin(), seen.end(), setting[p]) == seen.end())
+              seen.push_back(setting[p]);
+          }
+          index = static_cast<std::size_t>(
+              std::find(seen.begin(), seen.end(), spec.settings[k][p]) - seen.begin());
+        }
+        throw ScenarioError(
+            spec.source, fmt::format("{}[{}]", list_paths[p], index),
+            fmt::format("{} = {} gives an invalid scenario: {}: {}", spec.parameters[p],
+                        spec.settings[k][p].dump(), e.path(), e.detail()));
+      }
+      throw ScenarioError(spec.source, "$.scenario",
+                          fmt::format("the scenario is invalid: {}", e.what()));
+    }
+  }
+}
+
+}  // namespace
+
+SweepSpec load_sweep(const std::filesystem::path& file) {
+  SweepSpec spec;
+  spec.source = file.string();
+  const nlohmann::json j = read_json_file(file);
+  const JsonValue root(j, spec.source);
+  root.only_keys({"scenario", "grid", "zip", "seeds"});
+  const JsonValue scenario = root.at("scenario");
+  if (scenario.raw().is_string()) {
+    const std::filesystem::path path = file.parent_path() / scenario.string();
+    spec.scenario = read_json_file(path);
+    spec.scenario_dir = path.parent_path();
+  } else if (scenario.raw().is_object()) {
+    spec.scenario = scenario.raw();
+    spec.scenario_dir = file.parent_path();
+  } else {
+    scenario.fail("expected a scenario file name or an inline scenario object");
+  }
+
+  // Grid: a cartesian product, first key outermost. Each parameter's list and where it is in
+  // the file, for errors that name the value at fault.
+  std::vector<std::vector<nlohmann::json>> settings{{}};
+  std::vector<std::string> list_paths;
+  const auto no_repeats = [](const JsonValue& values) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (values.raw()[i] == values.raw()[j])
+          values[i].fail(
+              fmt::format("{} is listed twice (also at [{}])", values.raw()[i].dump(), j));
+      }
+    }
+  };
+  auto check_key = [&](const JsonValue& where, const std::string& key) {
+    if (const std::string e = dotted_path_error(key); !e.empty()) where.fail(e);
+    if (key == "seed") where.fail("\"seed\" is set by \"seeds\", not by the grid");
+    for (const auto& p : spec.parameters) {
+      if (p == key) where.fail(fmt::format("\"{}\" is swept twice", key));
+    }
+  };
+  if (auto grid = root.find("grid")) {
+    if (!grid->raw().is_object()) grid->fail("expected an object of dotted paths to value lists");
+    for (const auto& [key, list] : grid->raw().items()) {
+      const JsonValue values = *grid->find(key);
+      check_key(values, key);
+      if (values.size() == 0) values.fail("expected at least one value");
+      no_repeats(values);
+      spec.parameters.push_back(key);
+      list_paths.push_back(values.path());
+      std::vector<std::vector<nlohmann::json>> next;
+      for (const auto& s : settings) {
+        for (const auto& v : list) {
+          next.push_back(s);
+          next.back().push_back(v);
+        }
+      }
+      settings.swap(next);
+    }
+  }
+  const std::size_t grid_parameters = spec.parameters.size();
+  std::size_t zip_rows = 0;
+  if (auto zip = root.find("zip")) {
+    if (!zip->raw().is_object()) zip->fail("expected an object of dotted paths to value lists");
+    std::size_t rows = 0;
+    std::vector<std::pair<std::string, nlohmann::json>> columns;
+    for (const auto& [key, list] : zip->raw().items()) {
+      const JsonValue values = *zip->find(key);
+      check_key(values, key);
+      if (values.size() == 0) values.fail("expected at least one value");
+      if (rows != 0 && values.size() != rows)
+        values.fail(fmt::format("expected {} values, as the other zip lists", rows));
+      rows = values.size();
+      spec.parameters.push_back(key);
+      list_paths.push_back(values.path());
+      columns.emplace_back(key, list);
+    }
+    for (std::size_t r = 0; r < rows; ++r) {
+      for (std::size_t q = 0; q < r; ++q) {
+        bool same = true;
+        for (const auto& [key, list] : columns)
+          same = same && list[r] == list[q];
+        if (same) zip->fail(fmt::format("rows {} and {} are the same setting", q, r));
+      }
+    }
+    zip_rows = columns.empty() ? 0 : rows;
+    if (!columns.empty()) {
+      std::vector<std::vector<nlohmann::json>> next;
+      for (const auto& s : settings) {
+        for (std::size_t r = 0; r < rows; ++r) {
+          next.push_back(s);
+          for (const auto& [key, list] : columns)
+            next.back().push_back(list[r]);
+        }
+      }
+      settings.swap(next);
+    }
+  }
+  spec.settings = std::move(settings);
+
+  const JsonValue seeds = root.at("seeds");
+  if (seeds.raw().is_array()) {
+    for (std::size_t i = 0; i < seeds.size(); ++i) {
+      const std::uint64_t seed = seeds[i].unsigned_integer();
+      for (std::size_t j = 0; j < spec.seeds.size(); ++j) {
+        if (spec.seeds[j] == seed)
+          seeds[i].fail(fmt::format("seed {} is listed twice (also at [{}])", seed, j));
+      }
+      spec.seeds.push_back(seed);
+    }
+    if (spec.seeds.empty()) seeds.fail("expected at least one seed");
+  } else {
+    seeds.only_keys({"count"});
+    const std::uint64_t n = seeds.at("count").unsigned_integer();
+    if (n == 0 || n > 1'000'000) seeds.at("count").fail("expected a count between 1 and 1000000");
+    for (std::uint64_t s = 1; s <= n; ++s)
+      spec.seeds.push_back(s);
+  }
+  validate_settings(spec, list_paths, grid_parameters, zip_rows);
+  return spec;
+}
+
+nlohmann::json to_json(const SweepSpec& spec) {
+  return nlohmann::json{{"source", spec.source},
+                        {"scenario", spec.scenario},
+                        {"scenario_dir", spec.scenario_dir.string()},
+                        {"parameters", spec.parameters},
+                        {"settings", spec.settings},
+                        {"seeds", spec.seeds}};
+}
+
+SweepSpec sweep_from_json(const nlohmann::json& j) {
+  SweepSpec spec;
+  spec.source = j.at("source").get<std::string>();
+  spec.scenario = j.at("scenario");
+  spec.scenario_dir = j.at("scenario_dir").get<std::string>();
+  spec.parameters = j.at("parameters").get<std::vector<std::string>>();
+  spec.settings = j.at("settings").get<std::vector<std::vector<nlohmann::json>>>();
+  spec.seeds = j.at("seeds").get<std::vector<std::uint64_t>>();
+  return spec;
+}
+
+std::vector<SweepRun> SweepSpec::runs() const {
+  std::vector<SweepRun> out;
+  for (std::size_t s = 0; s < settings.size(); ++s) {
+    for (std::uint64_t seed : seeds)
+      out.push_back(SweepRun{out.size(), s, seed, settings[s]});
+  }
+  return out;
+}
+
+nlohmann::json SweepSpec::scenario_for(const SweepRun& run) const {
+  nlohmann::json j = scenario;
+  for (std::size_t p = 0; p < parameters.size(); ++p)
+    set_dotted(j, parameters[p], run.values[p]);
+  j["seed"] = run.seed;
+  return j;
+}
+
+}  // namespace covsim

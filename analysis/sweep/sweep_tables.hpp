@@ -1,0 +1,26 @@
+#pragma once
+// A sweep's tables: DIR/runs.csv (one row per run: its parameters, seed, measures and error)
+// and DIR/summary.csv (one row per setting: mean, spread, quartiles and modes of every
+// summarised measure).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/sweep/sweep_result.hpp"
+#include "analysis/sweep/sweep_spec.hpp"
+
+namespace covsim {
+
+// The measures summarised per setting, in this order, as they appear in summary.csv: the run
+// fields marked summarized.
+std::vector<std::string> sweep_metrics();
+
+// A swept value as a CSV cell: strings bare, null as "null", the rest as JSON.
+std::string csv_value(const nlohmann::json& v);
+
+void write_runs_csv(const std::filesystem::path& file, const SweepSpec& spec,
+                    const std::vector<SweepResult>& results);
+void write_summary_csv(const std::filesystem::path& file, const SweepSpec& spec,
+                       const std::vector<SweepResult>& results);
+
+}  // namespace covsim

@@ -1,0 +1,53 @@
+#pragma once
+// Extending covsim without touching its source. A plugin is a shared library that `covsim
+// run|sweep|list ... --plugin FILE` loads before reading the scenario; it adds its
+// components to the registries and is then selected by name in a scenario like any
+// built-in one. Write the registering function and name it with COVSIM_PLUGIN:
+//
+//   void register_mine(covsim::Registries& r) { r.planners.add(bug2_entry()); }
+//   COVSIM_PLUGIN(register_mine)
+//
+// and build the library against the installed package's covsim::plugin target (headers
+// and flags only: the plugin uses the symbols of the covsim program that loads it, so its
+// components land in that program's registries). The plugin API version is checked when
+// the plugin loads; a plugin built for another version is refused with both versions named.
+// A program that links covsim::covsim adds its components the same way, through
+// registries(), and calls run_coverage or run_sweep itself.
+#include "core/version.hpp"
+#include "geometry/density_registry.hpp"
+#include "net/delay_registry.hpp"
+#include "net/loss_registry.hpp"
+#include "planners/planner_registry.hpp"
+#include "robot/coverage_law_registry.hpp"
+
+namespace covsim {
+
+// Changes whenever a registry entry or an extension interface changes incompatibly.
+inline constexpr int kPluginApiVersion = 1;
+
+struct Registries {
+  Registry<PlannerEntry>& planners;
+  Registry<LawEntry>& laws;
+  Registry<LossEntry>& loss;
+  Registry<DelayEntry>& delay;
+  Registry<DensityEntry>& densities;
+};
+
+inline Registries registries() {
+  return Registries{planner_registry(), coverage_law_registry(), loss_registry(), delay_registry(),
+                    density_registry()};
+}
+
+}  // namespace covsim
+
+// The plugin's entry points, with C names so that the loader finds them.
+#define COVSIM_PLUGIN(register_function)                          \
+  extern "C" int covsim_plugin_api_version() {                    \
+    return covsim::kPluginApiVersion;                             \
+  }                                                               \
+  extern "C" const char* covsim_plugin_covsim_version() {         \
+    return covsim::kVersion;                                      \
+  }                                                               \
+  extern "C" void covsim_plugin_register(covsim::Registries* r) { \
+    register_function(*r);                                        \
+  }
