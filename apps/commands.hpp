@@ -6,7 +6,6 @@
 namespace covsim::app {
 
 void add_cells_command(CLI::App& app);
-void add_chart_command(CLI::App& app);
 void add_describe_command(CLI::App& app);
 void add_kernel_demo_command(CLI::App& app);
 void add_list_command(CLI::App& app);

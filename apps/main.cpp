@@ -14,7 +14,6 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", covsim::describe_build(covsim::this_build()));
   app.require_subcommand(1);
   covsim::app::add_cells_command(app);
-  covsim::app::add_chart_command(app);
   covsim::app::add_describe_command(app);
   covsim::app::add_kernel_demo_command(app);
   covsim::app::add_list_command(app);

@@ -107,13 +107,19 @@ def sweep(spec, jobs=1, out=None, keep_series=False):
     keep_series: keep each run's metrics as out/runs/<index>.metrics.csv (give out).
     Returns the rows of runs.csv: a pandas DataFrame when pandas can be imported, else a list
     of dicts. Every setting is validated before anything runs (a ScenarioError naming the
-    value). Results do not depend on jobs."""
+    value). Results do not depend on jobs. A rerun into the same out reuses every finished run
+    (docs/sweeps.md), as `covsim sweep` does: a spec object is kept as out/spec.json, so that
+    the sweep file of both calls is the same."""
     with tempfile.TemporaryDirectory(prefix="covsim-sweep-") as scratch:
         if isinstance(spec, dict):
             spec = dict(spec)
             if isinstance(spec.get("scenario"), str):
                 spec["scenario"] = os.path.abspath(spec["scenario"])
-            path = os.path.join(scratch, "sweep.json")
+            folder = scratch
+            if out is not None:
+                folder = os.path.abspath(os.fspath(out))
+                os.makedirs(folder, exist_ok=True)
+            path = os.path.join(folder, "spec.json" if out is not None else "sweep.json")
             with open(path, "w") as f:
                 json.dump(spec, f)
         else:

@@ -27,6 +27,30 @@ def test_sweep_rows_equal_runs_csv(scenarios, tmp_path):
     assert list(one["fingerprint"]) == list(rows["fingerprint"])
 
 
+def test_a_sweep_resumes_into_its_folder(scenarios, tmp_path):
+    spec = {"scenario": str(scenarios / "u_shape.json"),
+            "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.0, 0.4]},
+            "seeds": [1]}
+    first = covsim.sweep(spec, out=tmp_path / "sw")
+    # A finished run is read back, not run again; a missing one is run.
+    done = tmp_path / "sw" / "runs" / "1.json"
+    result = json.loads(done.read_text())
+    result["wall_time"] = 12345.0
+    done.write_text(json.dumps(result))
+    (tmp_path / "sw" / "runs" / "0.json").unlink()
+    second = covsim.sweep(dict(spec), out=tmp_path / "sw")
+    assert second.loc[1, "wall_time"] == 12345.0
+    assert (tmp_path / "sw" / "runs" / "0.json").exists()
+    assert list(second["fingerprint"]) == list(first["fingerprint"])
+    # The same from a sweep file, and another sweep into the folder is refused.
+    (tmp_path / "sweep.json").write_text(json.dumps(spec))
+    covsim.sweep(tmp_path / "sweep.json", out=tmp_path / "file")
+    assert covsim.sweep(tmp_path / "sweep.json", out=tmp_path / "file").shape == first.shape
+    spec["seeds"] = [2]
+    with pytest.raises(RuntimeError, match="holds results of a different sweep"):
+        covsim.sweep(spec, out=tmp_path / "sw")
+
+
 def test_load_run_reads_a_run_folder_into_arrays(scenarios, cli, tmp_path):
     cli("run", scenarios / "u_shape.json", "--out", tmp_path / "run")
     run = covsim.load_run(tmp_path / "run")

@@ -19,43 +19,22 @@ across scenarios (docs/scenario-format.md, convergence.spacing_tolerance). Each 
 summarised by its median and interquartile range, and by its two modes where the runs split
 into early and late ones (docs/sweeps.md); means would describe runs that never happened.
 
-Usage: scripts/study-fidelity [--jobs N] [--seeds N] [--scenarios a,b]
+Usage: python3 studies/fidelity.py [--jobs N] [--seeds N] [--scenarios a,b]
 The sweeps resume: a rerun into out/study-fidelity/ reuses every run already there. A sweep
-that fails fails the study. The prose findings live in docs/studies.md, outside the
+with a failed run fails the study. The prose findings live in docs/studies.md, outside the
 generated section, and are written from traced runs.
 """
 import argparse
 import json
 import math
 import os
-import subprocess
-import sys
-from pathlib import Path
 
-import matplotlib
+import pandas as pd
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import study
 
-# The same figures for the same results: no date, fixed element ids.
-plt.rcParams["svg.hashsalt"] = "covsim-study-fidelity"
-import pandas as pd  # noqa: E402
-
-ROOT = Path(__file__).resolve().parent.parent
-COVSIM = ROOT / "build" / "apps" / "covsim"
-WORK = ROOT / "out" / "study-fidelity"
-DOCS = ROOT / "docs" / "studies"
-
-# The deployments every study draws per seed (scripts/study-common): all robots start in
-# one place, as in the paper.
-DEPLOY = {
-    "u_shape": {"count": 5, "start": {"cluster": {"center": [0.12, 0.88], "radius": 0.1}}},
-    "office": {
-        "count": 30,
-        "start": {"region": [[0.3, 4.2], [3.2, 4.2], [3.2, 5.8], [0.3, 5.8]]},
-    },
-    "dead_ends": {"count": 8, "start": {"cluster": {"center": [3, 0.45], "radius": 0.3}}},
-}
+WORK = study.ROOT / "out" / "study-fidelity"
+FIGURES = study.DOCS / "studies"
 LOOP2 = [0.1, 0.2]
 RATIOS = [1, 5, 20]
 RANGES = [0.0, 0.5, 2.0, None]
@@ -83,43 +62,13 @@ def range_label(r):
     return "∞" if r is None or (isinstance(r, float) and math.isinf(r)) else f"{r:g} m"
 
 
-def sweep_file(name, scenario, grid, seeds):
-    path = WORK / f"{name}.json"
-    path.write_text(json.dumps({
-        "scenario": str(ROOT / "scenarios" / f"{scenario}.json"),
-        "grid": grid,
-        "seeds": {"count": seeds},
-    }, indent=1) + "\n")
-    return path
-
-
-def run_sweep(path, out, jobs):
-    print(f"== {path.stem}", file=sys.stderr, flush=True)
-    subprocess.run([str(COVSIM), "sweep", str(path), "--out", str(out), "--jobs", str(jobs)],
-                   check=True, stdout=sys.stderr)
-
-
-def read_summary(out):
-    s = pd.read_csv(out / "summary.csv", float_precision="round_trip", keep_default_na=False)
-    s["loops"] = s["loops"].map(json.loads)
-    return s
-
-
-def number(v):
-    return float("nan") if v == "" else float(v)
-
-
-def cell_text(row, measure, fmt):
-    """Median [q1, q3], and the share of runs in the early mode when the runs split."""
-    if row[f"{measure}_median"] == "":
-        return "–"
-    text = f"{fmt % number(row[measure + '_median'])} [{fmt % number(row[measure + '_q1'])}, " \
-           f"{fmt % number(row[measure + '_q3'])}]"
-    if row[f"{measure}_modes"] == 2 or row[f"{measure}_modes"] == "2":
-        low = number(row[f"{measure}_low_fraction"])
-        text += (f"; {round(100 * low)}% at {fmt % number(row[measure + '_low_median'])}, "
-                 f"{round(100 * (1 - low))}% at {fmt % number(row[measure + '_high_median'])}")
-    return text
+def run_sweep(name, scenario, grid, seeds, jobs):
+    """Runs one sweep into WORK/name; returns its summary.csv, the loop schedules as dicts."""
+    out = WORK / name
+    study.sweep(study.write_sweep(WORK / f"{name}.json", scenario, grid, seeds), out, jobs)
+    summary = study.read_summary(out)
+    summary["loops"] = summary["loops"].map(json.loads)
+    return summary
 
 
 def column_key(row):
@@ -134,7 +83,7 @@ def columns():
     return [f"tangent_bug {range_label(r)}" for r in RANGES] + ["grid_astar"]
 
 
-def heat_map(table, scenario, measure, label, fmt, file):
+def heat_map(plt, table, scenario, measure, label, fmt, file):
     """One panel per projection policy: rows the loop schedules, columns the planners at
     each range; colour the median, text the median and the converged share."""
     rows = [loop_label(l) for l in loop_settings()]
@@ -147,7 +96,7 @@ def heat_map(table, scenario, measure, label, fmt, file):
         for _, row in table[table["controller.projection"] == p].iterrows():
             i = rows.index(loop_label(row["loops"]))
             j = cols.index(column_key(row))
-            grid[i][j] = number(row[f"{measure}_median"])
+            grid[i][j] = row[f"{measure}_median"]
         values[p] = grid
     finite = [v for g in values.values() for line in g for v in line if not math.isnan(v)]
     vmin, vmax = (min(finite), max(finite)) if finite else (0.0, 1.0)
@@ -167,8 +116,7 @@ def heat_map(table, scenario, measure, label, fmt, file):
     bar.set_label(label, fontsize=7)
     bar.ax.tick_params(labelsize=7)
     fig.suptitle(f"{scenario}: median {label} ({len(finite)} cells)", fontsize=9)
-    fig.savefig(file, metadata={"Date": None})
-    plt.close(fig)
+    study.save_svg(fig, file)
 
 
 def markdown(table, scenario):
@@ -186,12 +134,13 @@ def markdown(table, scenario):
     table = table.assign(_c=table["_col"].map(col_order)).sort_values(
         ["_row", "controller.projection", "_c"])
     for _, row in table.iterrows():
-        rate = "–" if row["converged_rate"] == "" else f"{100 * number(row['converged_rate']):.0f}%"
         lines.append(
             f"| {loop_label(row['loops'])} | {row['_col']} | {row['controller.projection']} | "
-            f"{rate} | {cell_text(row, 'time_to_1_percent', '%.1f')} | "
-            f"{cell_text(row, 'sim_time', '%.1f')} | {cell_text(row, 'cost_real', '%.4g')} | "
-            f"{cell_text(row, 'path_length', '%.3g')} |")
+            f"{study.percent(row, 'converged_rate')} | "
+            f"{study.median_iqr(row, 'time_to_1_percent', '%.1f')} | "
+            f"{study.median_iqr(row, 'sim_time', '%.1f')} | "
+            f"{study.median_iqr(row, 'cost_real', '%.4g')} | "
+            f"{study.median_iqr(row, 'path_length', '%.3g')} |")
     lines.append("")
     return lines
 
@@ -204,12 +153,9 @@ def main():
     args = ap.parse_args()
     scenarios = args.scenarios.split(",")
     for s in scenarios:
-        if s not in DEPLOY:
-            ap.error(f"--scenarios: unknown scenario {s!r} (one of {', '.join(DEPLOY)})")
-    if not COVSIM.exists():
-        subprocess.run([str(ROOT / "scripts" / "build"), str(ROOT / "build")], check=True)
-    WORK.mkdir(parents=True, exist_ok=True)
-    DOCS.mkdir(parents=True, exist_ok=True)
+        if s not in study.DEPLOY:
+            ap.error(f"--scenarios: unknown scenario {s!r} (one of {', '.join(study.DEPLOY)})")
+    plt = study.pyplot("covsim-study-fidelity")
     # A scenario's own tolerances (office sets 5 cm) give way to the fraction of the spacing.
     common = {"convergence.spacing_tolerance": [SPACING_TOLERANCE],
               "convergence.position_tolerance": [None], "convergence.virtual_tolerance": [None],
@@ -217,7 +163,7 @@ def main():
     section = [
         "## Fidelity: Lloyd/planner ratio, sensor range, planner and projection policy",
         "",
-        "Generated by `scripts/study-fidelity` (sweep files in `out/study-fidelity/`): the",
+        "Generated by `studies/fidelity.py` (sweep files in `out/study-fidelity/`): the",
         "paper's controller, centralized with an ideal network, on u_shape, office and",
         f"dead_ends, {args.seeds} random deployments per cell (seed k draws the start of run k),",
         "every loop schedule (loop-2 period Δ2 of 0.1 and 0.2 s, the classic loop 1 and a",
@@ -230,27 +176,25 @@ def main():
         "",
     ]
     for scenario in scenarios:
-        deploy = {"robots": [DEPLOY[scenario]]}
-        out_tb = WORK / f"{scenario}-tangent_bug"
-        out_grid = WORK / f"{scenario}-grid_astar"
-        run_sweep(sweep_file(out_tb.name, scenario, {
-            **common, **deploy, "planner.type": ["tangent_bug"], "controller.projection": PROJECTIONS,
-            "sensor.range": RANGES}, args.seeds), out_tb, args.jobs)
+        deploy = {"robots": [study.DEPLOY[scenario]]}
+        tangent_bug = run_sweep(f"{scenario}-tangent_bug", scenario, {
+            **common, **deploy, "planner.type": ["tangent_bug"],
+            "controller.projection": PROJECTIONS, "sensor.range": RANGES}, args.seeds, args.jobs)
         # grid_astar plans to the closest point of Ω itself: both policies give the same runs.
-        run_sweep(sweep_file(out_grid.name, scenario, {
-            **common, **deploy, "planner.type": ["grid_astar"]}, args.seeds), out_grid, args.jobs)
-        grid = read_summary(out_grid).assign(**{"sensor.range": ""})
-        table = pd.concat([read_summary(out_tb)] +
+        grid = run_sweep(f"{scenario}-grid_astar", scenario, {
+            **common, **deploy, "planner.type": ["grid_astar"]}, args.seeds, args.jobs)
+        grid = grid.assign(**{"sensor.range": ""})
+        table = pd.concat([tangent_bug] +
                           [grid.assign(**{"controller.projection": p}) for p in PROJECTIONS],
                           ignore_index=True)
         for measure, label, fmt in [("time_to_1_percent", "time to 1% of final cost [s]", "%.0f"),
                                     ("cost_real", "final cost H", "%.3g")]:
-            heat_map(table, scenario, measure, label, fmt,
-                     DOCS / f"fidelity-{scenario}-{measure}.svg")
+            heat_map(plt, table, scenario, measure, label, fmt,
+                     FIGURES / f"fidelity-{scenario}-{measure}.svg")
         section += markdown(table, scenario)
-    subprocess.run([str(ROOT / "scripts" / "replace-doc-section"), str(ROOT / "docs" / "studies.md"),
-                    "fidelity"], input="\n".join(section), text=True, check=True)
+    # Each scenario's lines end with an empty one; the section does not.
+    study.replace_section(study.DOCS / "studies.md", "fidelity", section[:-1])
 
 
 if __name__ == "__main__":
-    main()
+    study.run(main)
