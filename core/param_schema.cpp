@@ -44,17 +44,6 @@ std::string number_text(double v) {
   return fmt::format("{}", v);
 }
 
-// "> 0", ">= 0 and <= 1": the bounds in words.
-std::string bounds_text(const ParamSpec& s) {
-  std::string out;
-  if (s.min) out += fmt::format("{} {}", s.min_exclusive ? ">" : ">=", number_text(*s.min));
-  if (s.max) {
-    if (!out.empty()) out += " and ";
-    out += fmt::format("{} {}", s.max_exclusive ? "<" : "<=", number_text(*s.max));
-  }
-  return out;
-}
-
 std::string kind_text(const ParamSpec& s) {
   switch (s.kind) {
     case ParamKind::number:
@@ -81,6 +70,16 @@ std::string kind_text(const ParamSpec& s) {
   return "a value";
 }
 }  // namespace
+
+std::string bounds_text(const ParamSpec& s) {
+  std::string out;
+  if (s.min) out += fmt::format("{} {}", s.min_exclusive ? ">" : ">=", number_text(*s.min));
+  if (s.max) {
+    if (!out.empty()) out += " and ";
+    out += fmt::format("{} {}", s.max_exclusive ? "<" : "<=", number_text(*s.max));
+  }
+  return out;
+}
 
 ParamSpec ParamSpec::number(std::string name, std::string unit, std::string description) {
   return make(std::move(name), ParamKind::number, std::move(unit), std::move(description));
@@ -132,6 +131,19 @@ ParamSpec& ParamSpec::below(double v) {
   max_exclusive = true;
   return *this;
 }
+ParamSpec& ParamSpec::positive() {
+  return greater_than(0).worded("a positive number");
+}
+ParamSpec& ParamSpec::non_negative() {
+  return at_least(0).worded("a non-negative number");
+}
+ParamSpec& ParamSpec::probability() {
+  return at_least(0).at_most(1).worded("a probability in [0, 1]");
+}
+ParamSpec& ParamSpec::worded(std::string expected_text) {
+  expected = std::move(expected_text);
+  return *this;
+}
 ParamSpec& ParamSpec::defaults_to(ParamValue v) {
   default_value = std::move(v);
   return *this;
@@ -179,6 +191,8 @@ std::string check_param(const ParamSpec& s, const ParamValue& v) {
     const bool ok = (!s.min || (s.min_exclusive ? x > *s.min : x >= *s.min)) &&
                     (!s.max || (s.max_exclusive ? x < *s.max : x <= *s.max));
     if (ok) return "";
+    if (!s.expected.empty())
+      return fmt::format("expected {}, found {}", s.expected, number_text(x));
     return fmt::format("expected {} {}, found {}", kind_text(s), bounds_text(s), number_text(x));
   };
   switch (s.kind) {
@@ -311,13 +325,17 @@ Params with_derived(const ParamSchema& schema, Params p, const Environment& env)
   return p;
 }
 
+std::string default_text(const ParamSpec& s) {
+  if (s.default_value) return to_text(*s.default_value);
+  if (!s.default_rule.empty()) return s.default_rule;
+  return s.nullable ? "null" : "required";
+}
+
 std::string describe(const ParamSchema& schema, const std::string& indent) {
   std::string out;
   for (const ParamSpec& s : schema) {
-    std::string def = s.default_value           ? "default " + to_text(*s.default_value)
-                      : !s.default_rule.empty() ? "default " + s.default_rule
-                                                : "required";
-    if (s.nullable && !s.default_value && s.default_rule.empty()) def = "default null";
+    const std::string text = default_text(s);
+    const std::string def = text == "required" ? text : "default " + text;
     const std::string bounds = bounds_text(s);
     out +=
         fmt::format("{}{:<16} {:<8} {}{}{}{}  {}\n", indent, s.name, to_string(s.kind), def,
@@ -327,6 +345,28 @@ std::string describe(const ParamSchema& schema, const std::string& indent) {
       out += fmt::format("{}{:<16} {}\n", indent, "", kind_text(s));
     }
     if (!s.fields.empty()) out += describe(s.fields, indent + "    ");
+  }
+  return out;
+}
+
+std::string markdown_table(const ParamSchema& schema) {
+  // A cell's text with the table's separator escaped.
+  const auto cell = [](std::string text) {
+    for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2))
+      text.replace(at, 1, "\\|");
+    return text;
+  };
+  std::string out =
+      "| key | kind | unit | default | bounds | meaning |\n|---|---|---|---|---|---|\n";
+  for (const ParamSpec& s : schema) {
+    std::string kind(to_string(s.kind));
+    if (s.kind == ParamKind::choice) kind = kind_text(s);
+    std::string bounds = bounds_text(s);
+    if (s.nullable) bounds += bounds.empty() ? "or null" : ", or null";
+    const std::string def =
+        s.default_value ? "`" + to_text(*s.default_value) + "`" : default_text(s);
+    out += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", s.name, cell(kind), s.unit, cell(def),
+                       cell(bounds), cell(s.description));
   }
   return out;
 }

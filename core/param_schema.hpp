@@ -47,6 +47,9 @@ struct ParamSpec {
   std::optional<double> min, max;  // numbers and integers
   bool min_exclusive = false, max_exclusive = false;
   std::vector<std::string> choices;
+  // What an error says is expected when the value is out of bounds ("a period between 1e-4
+  // and 1e6 s"); empty: the kind and the bounds ("a number > 0").
+  std::string expected;
   std::optional<ParamValue> default_value;  // a constant default
   std::string default_rule;                 // a default that depends on the run, in words
   // The rule's value for an environment (what `covsim describe` shows and factories use).
@@ -70,6 +73,11 @@ struct ParamSpec {
   ParamSpec& greater_than(double v);
   ParamSpec& at_most(double v);
   ParamSpec& below(double v);
+  // Bounds with their usual words in errors: > 0, >= 0, and [0, 1].
+  ParamSpec& positive();
+  ParamSpec& non_negative();
+  ParamSpec& probability();
+  ParamSpec& worded(std::string expected_text);
   ParamSpec& defaults_to(ParamValue v);
   ParamSpec& derived(std::string rule,
                      std::function<ParamValue(const Environment&)> value = nullptr);
@@ -132,5 +140,12 @@ Params with_derived(const ParamSchema& schema, Params p, const Environment& env)
 // A schema as `covsim list` prints it: one line per parameter (name, kind, default, unit,
 // bounds, description), nested fields indented.
 std::string describe(const ParamSchema& schema, const std::string& indent = "    ");
+// A schema as a Markdown table (key, kind, unit, default, bounds, description), for the
+// documentation's generated tables.
+std::string markdown_table(const ParamSchema& schema);
+// A parameter's default in words: a constant as JSON, a rule, "null", or "required".
+std::string default_text(const ParamSpec& spec);
+// Its bounds in words: "> 0", ">= 0 and <= 1"; empty when unbounded.
+std::string bounds_text(const ParamSpec& spec);
 
 }  // namespace covsim

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace covsim {
 
@@ -22,6 +24,228 @@ std::optional<ProjectionPolicy> projection_named(std::string_view name) {
     if (n == name) return policy;
   }
   return std::nullopt;
+}
+
+namespace {
+using Key = ConfigKey<CoverageConfig>;
+
+std::vector<std::string> names_of_policies() {
+  std::vector<std::string> out;
+  for (const auto& [policy, name] : kProjectionPolicies)
+    out.emplace_back(name);
+  return out;
+}
+
+// A tolerance as the run uses it: given, or derived from Ω and the robots' spacing.
+Key tolerance_key(const char* name, std::optional<double> CoverageConfig::*member,
+                  const char* what) {
+  return Key{ParamSpec::number(name, "m", what)
+                 .positive()
+                 .or_null()
+                 .derived("1e-3 × diameter of Ω's box, or spacing_tolerance × spacing"),
+             [member](CoverageConfig& c, const ParamValue& v) { config_value::from(v, c.*member); },
+             [member](const CoverageConfig& c, const RunShape& s) -> std::optional<ParamValue> {
+               const double diameter = s.environment.diameter();
+               const double spacing = robot_spacing(s.environment, s.robots);
+               return (c.*member).value_or(c.default_tolerance(diameter, spacing));
+             }};
+}
+}  // namespace
+
+ConfigKeys<CoverageConfig> motion_keys() {
+  const CoverageConfig d;
+  return {member_key<CoverageConfig>(
+      ParamSpec::number("max_speed", "m/s", "robots and virtual generators move at most this fast")
+          .positive()
+          .defaults_to(d.max_speed),
+      &CoverageConfig::max_speed)};
+}
+
+ConfigKeys<CoverageConfig> projection_keys() {
+  const CoverageConfig d;
+  return {Key{ParamSpec::choice("projection", names_of_policies(),
+                                "what the planner is told when a target lies outside Ω, whatever "
+                                "the type: the paper's \"discover\" or \"known\" (below)")
+                  .defaults_to(std::string(to_string(d.projection))),
+              [](CoverageConfig& c, const ParamValue& v) {
+                c.projection = *projection_named(std::get<std::string>(v));
+              },
+              [](const CoverageConfig& c, const RunShape&) -> std::optional<ParamValue> {
+                return std::string(to_string(c.projection));
+              }}};
+}
+
+ConfigKeys<CoverageConfig> sensor_keys() {
+  const CoverageConfig d;
+  return {
+      // The config's infinite range is null in the file.
+      Key{ParamSpec::number("range", "m",
+                            "sensing range: 0 (contact sensing), a finite range, or null for "
+                            "infinite")
+              .non_negative()
+              .or_null()
+              .defaults_to(std::monostate{}),
+          [](CoverageConfig& c, const ParamValue& v) {
+            c.sensor.range = std::holds_alternative<double>(v) ? std::get<double>(v) : INFINITY;
+          },
+          [](const CoverageConfig& c, const RunShape&) -> std::optional<ParamValue> {
+            if (std::isinf(c.sensor.range)) return ParamValue(std::monostate{});
+            return c.sensor.range;
+          }},
+      member_key<CoverageConfig>(
+          period_param("period",
+                       "seconds between range readings; null: a fresh reading at every loop-2 "
+                       "step. Between readings the planner works with the latest one")
+              .or_null()
+              .defaults_to(config_value::to(d.sensor.period)),
+          &CoverageConfig::sensor, &SensorConfig::period),
+      // Required in "noise": {"sigma": s}; a file without "noise" has none.
+      member_key<CoverageConfig>(
+          ParamSpec::number("noise.sigma", "m",
+                            "Gaussian range noise: every sensed point moves along its ray from "
+                            "the robot by N(0, sigma²); no noise without \"noise\"")
+              .non_negative(),
+          &CoverageConfig::sensor, &SensorConfig::noise_sigma),
+      member_key<CoverageConfig>(
+          ParamSpec::number("dropout", "",
+                            "probability that a reading is lost (the planner keeps the previous "
+                            "one; the first is never lost)")
+              .probability()
+              .defaults_to(d.sensor.dropout),
+          &CoverageConfig::sensor, &SensorConfig::dropout)};
+}
+
+ConfigKeys<CoverageConfig> loop_keys() {
+  const CoverageConfig d;
+  const auto mode_name = [](LoopMode m) {
+    return std::string(m == LoopMode::periodic ? "periodic" : "classic");
+  };
+  return {
+      Key{ParamSpec::choice("mode", {"classic", "periodic"},
+                            "\"classic\": a robot runs loop 1 again once it has reached its real "
+                            "target or settled at its projection, as in the paper; "
+                            "\"periodic\": loop 1 every loop1_period")
+              .defaults_to(mode_name(d.mode)),
+          [](CoverageConfig& c, const ParamValue& v) {
+            c.mode =
+                std::get<std::string>(v) == "periodic" ? LoopMode::periodic : LoopMode::classic;
+          },
+          [mode_name](const CoverageConfig& c, const RunShape&) -> std::optional<ParamValue> {
+            return mode_name(c.mode);
+          }},
+      member_key<CoverageConfig>(
+          period_param("loop2_period",
+                       "seconds between motion steps (each at most max_speed × loop2_period long)")
+              .defaults_to(d.loop2_period.seconds()),
+          &CoverageConfig::loop2_period),
+      // After "mode", which it depends on.
+      Key{period_param("loop1_period",
+                       "seconds between Lloyd updates, \"periodic\" only (an error otherwise); "
+                       "loop1_period / loop2_period is the Lloyd/planner frequency ratio")
+              .defaults_to(d.loop1_period.seconds()),
+          [](CoverageConfig& c, const ParamValue& v) {
+            if (c.mode != LoopMode::periodic)
+              throw ParamError("loop1_period",
+                               "loop1_period applies to \"mode\": \"periodic\" only");
+            config_value::from(v, c.loop1_period);
+          },
+          [](const CoverageConfig& c, const RunShape&) -> std::optional<ParamValue> {
+            if (c.mode != LoopMode::periodic) return std::nullopt;
+            return c.loop1_period.seconds();
+          }}};
+}
+
+ConfigKeys<CoverageConfig> convergence_keys() {
+  const CoverageConfig d;
+  return {tolerance_key("position_tolerance", &CoverageConfig::position_tolerance,
+                        "a robot within this distance of its real target is settled; null: the "
+                        "default"),
+          tolerance_key("virtual_tolerance", &CoverageConfig::virtual_tolerance,
+                        "a virtual generator within this distance of its virtual target is at "
+                        "rest; null: the default"),
+          // Written back as the two tolerances it sets.
+          Key{ParamSpec::number("spacing_tolerance", "",
+                                "both tolerances default to this fraction of the robots' spacing "
+                                "√(area of Ω / N) instead; a tolerance given explicitly wins")
+                  .greater_than(0)
+                  .at_most(1)
+                  .worded("a fraction of the robots' spacing, > 0 and at most 1")
+                  .derived("unset"),
+              [](CoverageConfig& c, const ParamValue& v) {
+                config_value::from(v, c.spacing_tolerance);
+              },
+              [](const CoverageConfig&, const RunShape&) -> std::optional<ParamValue> {
+                return std::nullopt;
+              }},
+          member_key<CoverageConfig>(
+              period_param("max_time", "simulated seconds after which a run stops unconverged")
+                  .defaults_to(d.max_time.seconds()),
+              &CoverageConfig::max_time)};
+}
+
+ConfigKeys<CoverageConfig> metrics_keys() {
+  const CoverageConfig d;
+  return {member_key<CoverageConfig>(
+              period_param("period", "simulated seconds between rows of metrics.csv")
+                  .defaults_to(d.sample_period.seconds()),
+              &CoverageConfig::sample_period),
+          member_key<CoverageConfig>(
+              ParamSpec::integer("algebraic_connectivity_robots", "robots",
+                                 "the most robots for which a networked run's metrics.csv gets "
+                                 "the communication graph's algebraic_connectivity (below)")
+                  .defaults_to(d.algebraic_connectivity_robots),
+              &CoverageConfig::algebraic_connectivity_robots)};
+}
+
+ConfigKeys<NetworkConfig> network_keys() {
+  using NetKey = ConfigKey<NetworkConfig>;
+  const NetworkConfig d;
+  return {
+      member_key<NetworkConfig>(
+          ParamSpec::number("range", "m",
+                            "a message reaches only robots within range (null: unlimited)")
+              .positive()
+              .or_null()
+              .defaults_to(config_value::to(d.channel.range)),
+          &NetworkConfig::channel, &ChannelConfig::range),
+      member_key<NetworkConfig>(
+          ParamSpec::boolean("line_of_sight",
+                             "walls block: the straight line between the robots must lie in Ω")
+              .defaults_to(d.channel.line_of_sight),
+          &NetworkConfig::channel, &ChannelConfig::line_of_sight),
+      member_key<NetworkConfig>(
+          period_param("broadcast_period", "seconds between a robot's broadcasts")
+              .defaults_to(d.broadcast_period.seconds()),
+          &NetworkConfig::broadcast_period),
+      member_key<NetworkConfig>(
+          ParamSpec::boolean("random_phase",
+                             "each robot's first broadcast at a random offset within the period")
+              .defaults_to(d.random_phase),
+          &NetworkConfig::random_phase),
+      member_key<NetworkConfig>(
+          period_param("staleness",
+                       "seconds after which an entry is dropped (by its send time); null: never")
+              .or_null()
+              .defaults_to(config_value::to(d.staleness)),
+          &NetworkConfig::staleness),
+      NetKey{duration_param("acquire",
+                            "seconds from the start to a robot's first loop 1, while it hears "
+                            "its neighbours (Algorithm 1, line 3)")
+                 .derived("one broadcast period"),
+             [](NetworkConfig& n, const ParamValue& v) { config_value::from(v, n.acquire); },
+             [](const NetworkConfig& n, const RunShape&) -> std::optional<ParamValue> {
+               return n.acquire_time().seconds();
+             }},
+      NetKey{
+          duration_param("acquire_timeout",
+                         "seconds from the start after which a robot that has heard nobody "
+                         "runs loop 1 alone (its cell is Ω); until then it waits for its "
+                         "first message")
+              .derived("ten broadcast periods"),
+          [](NetworkConfig& n, const ParamValue& v) { config_value::from(v, n.acquire_timeout); },
+          [](const NetworkConfig& n, const RunShape&) -> std::optional<ParamValue> {
+            return n.acquire_deadline().seconds();
+          }}};
 }
 
 }  // namespace covsim

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <utility>
 
+#include "core/config_key.hpp"
 #include "core/sim_time.hpp"
 #include "net/channel.hpp"
 #include "planners/planner_entry.hpp"
@@ -91,5 +92,16 @@ struct CoverageConfig {
   std::uint64_t algebraic_connectivity_robots = 2000;
   NetworkConfig network;
 };
+
+// The scenario's keys for these settings, each declared once with its schema (defaults
+// from the structs above): "robots": {"max_speed"}, "controller": {"projection"}, "sensor",
+// "loops", "convergence", "metrics", and the network's own keys.
+ConfigKeys<CoverageConfig> motion_keys();
+ConfigKeys<CoverageConfig> projection_keys();
+ConfigKeys<CoverageConfig> sensor_keys();
+ConfigKeys<CoverageConfig> loop_keys();
+ConfigKeys<CoverageConfig> convergence_keys();
+ConfigKeys<CoverageConfig> metrics_keys();
+ConfigKeys<NetworkConfig> network_keys();
 
 }  // namespace covsim

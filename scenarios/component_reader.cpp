@@ -6,12 +6,10 @@
 
 namespace covsim {
 
-namespace {
-ParamValue read_value(const JsonValue& v, const ParamSpec& s) {
+ParamValue read_param(const JsonValue& v, const ParamSpec& s) {
   if (v.is_null()) {
     if (s.nullable) return std::monostate{};
-    v.fail(fmt::format("expected {} (null is not allowed here)",
-                       s.kind == ParamKind::choice ? "one of its choices" : to_string(s.kind)));
+    v.fail(check_param(s, std::monostate{}));
   }
   ParamValue out;
   switch (s.kind) {
@@ -50,6 +48,7 @@ ParamValue read_value(const JsonValue& v, const ParamSpec& s) {
   return out;
 }
 
+namespace {
 bool contains(const std::vector<std::string>& list, const std::string& s) {
   return std::find(list.begin(), list.end(), s) != list.end();
 }
@@ -63,7 +62,7 @@ Params read_params(const JsonValue& section, const ParamSchema& schema,
   section.only_keys(allowed);
   Params p;
   for (const ParamSpec& s : schema) {
-    if (auto v = section.find(s.name)) p.set(s.name, read_value(*v, s));
+    if (auto v = section.find(s.name)) p.set(s.name, read_param(*v, s));
   }
   try {
     return with_defaults(schema, std::move(p));
@@ -72,27 +71,30 @@ Params read_params(const JsonValue& section, const ParamSchema& schema,
   }
 }
 
+nlohmann::ordered_json param_to_json(const ParamValue& value) {
+  return std::visit(
+      [](const auto& x) -> nlohmann::ordered_json {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, std::monostate>) return nullptr;
+        if constexpr (std::is_same_v<T, Vec2>) return {x.x, x.y};
+        if constexpr (std::is_same_v<T, Box>) return {{x.lo.x, x.lo.y}, {x.hi.x, x.hi.y}};
+        if constexpr (std::is_same_v<T, ParamObjects>) {
+          nlohmann::ordered_json a = nlohmann::ordered_json::array();
+          for (const Params& o : x)
+            a.push_back(params_to_json(o));
+          return a;
+        }
+        if constexpr (!std::is_same_v<T, std::monostate> && !std::is_same_v<T, Vec2> &&
+                      !std::is_same_v<T, Box> && !std::is_same_v<T, ParamObjects>)
+          return x;
+      },
+      value);
+}
+
 nlohmann::ordered_json params_to_json(const Params& p) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
-  for (const auto& [name, value] : p.values()) {
-    j[name] = std::visit(
-        [](const auto& x) -> nlohmann::ordered_json {
-          using T = std::decay_t<decltype(x)>;
-          if constexpr (std::is_same_v<T, std::monostate>) return nullptr;
-          if constexpr (std::is_same_v<T, Vec2>) return {x.x, x.y};
-          if constexpr (std::is_same_v<T, Box>) return {{x.lo.x, x.lo.y}, {x.hi.x, x.hi.y}};
-          if constexpr (std::is_same_v<T, ParamObjects>) {
-            nlohmann::ordered_json a = nlohmann::ordered_json::array();
-            for (const Params& o : x)
-              a.push_back(params_to_json(o));
-            return a;
-          }
-          if constexpr (!std::is_same_v<T, std::monostate> && !std::is_same_v<T, Vec2> &&
-                        !std::is_same_v<T, Box> && !std::is_same_v<T, ParamObjects>)
-            return x;
-        },
-        value);
-  }
+  for (const auto& [name, value] : p.values())
+    j[name] = param_to_json(value);
   return j;
 }
 
@@ -151,7 +153,7 @@ ComponentChoice read_component(const JsonValue& section,
   }
   Params flat;
   for (const ParamSpec& s : selected->params) {
-    if (auto v = section.find(s.name)) flat.set(s.name, read_value(*v, s));
+    if (auto v = section.find(s.name)) flat.set(s.name, read_param(*v, s));
   }
   if (own) {
     const Params from_own = read_params(*own, selected->params);

@@ -15,14 +15,19 @@
 #include <vector>
 
 #include "core/registry.hpp"
+#include "scenarios/component_sections.hpp"
 #include "scenarios/json_reader.hpp"
 
 namespace covsim {
 
+// One value checked against its spec: kind, bounds, null (an error names its path and what
+// was expected).
+ParamValue read_param(const JsonValue& v, const ParamSpec& spec);
+// A value as JSON, and the JSON form of parameter values (the inverse of read_params).
+nlohmann::ordered_json param_to_json(const ParamValue& v);
 // Values of a schema's parameters from an object; keys in `other_keys` are skipped.
 Params read_params(const JsonValue& section, const ParamSchema& schema,
                    const std::vector<std::string>& other_keys = {});
-// The JSON form of parameter values (the inverse of read_params).
 nlohmann::ordered_json params_to_json(const Params& p);
 
 struct ComponentChoice {
@@ -48,6 +53,13 @@ ComponentChoice read_component(const JsonValue& section, const Registry<Entry>& 
   for (const Entry& e : registry.entries())
     infos.push_back(&e);
   return read_component(section, infos, registry.kind(), type_key, default_type, section_keys);
+}
+
+// The component a section of the table (component_sections.hpp) selects.
+template <class Entry>
+ComponentChoice read_component(const JsonValue& section, const ComponentSection<Entry>& row,
+                               const std::vector<std::string>& section_keys = {}) {
+  return read_component(section, row.registry(), row.type_key, row.default_type, section_keys);
 }
 
 // A factory's ParamError as a ScenarioError at the parameter's JSON path in the section.

@@ -1,6 +1,8 @@
 #pragma once
 // What a run's folder records: "recording": {"trajectory_period": s, "compress": b}.
 
+#include "core/config_key.hpp"
+
 namespace covsim {
 
 struct RecordingConfig {
@@ -9,5 +11,8 @@ struct RecordingConfig {
   // Writes trajectory.csv.gz (gzip) instead of trajectory.csv.
   bool compress = false;
 };
+
+// Its keys, declared once with their schemas (defaults from the struct above).
+ConfigKeys<RecordingConfig> recording_keys();
 
 }  // namespace covsim

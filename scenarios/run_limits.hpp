@@ -3,6 +3,8 @@
 // "trajectory_rows": n}. A scenario over a limit is refused at load time with an error naming
 // the key that makes it large and this one, which raises the bound deliberately.
 
+#include "core/config_key.hpp"
+
 namespace covsim {
 
 struct RunLimits {
@@ -11,5 +13,8 @@ struct RunLimits {
   // Rows trajectory.csv may reach (robots x rows per robot; about 150 bytes each).
   double trajectory_rows = 2e7;
 };
+
+// Its keys, declared once with their schemas (defaults from the struct above).
+ConfigKeys<RunLimits> limit_keys();
 
 }  // namespace covsim

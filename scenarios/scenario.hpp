@@ -14,6 +14,7 @@
 #include "geometry/environment.hpp"
 #include "robot/coverage_config.hpp"
 #include "scenarios/recording_config.hpp"
+#include "scenarios/robot_draw.hpp"
 #include "scenarios/run_limits.hpp"
 
 namespace covsim {
@@ -27,6 +28,7 @@ struct Scenario {
   // Given, or drawn from the seed ("count" and "start", "jitter"); empty when the file has
   // no "robots".
   std::vector<Vec2> robot_positions;
+  RobotDraw draw;  // how they were drawn (separation, jitter)
   std::optional<std::uint64_t> seed;
   CoverageConfig coverage;  // the controller's settings, defaults where the file is silent
   RecordingConfig recording;

@@ -1,28 +1,26 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/random_stream.hpp"
 #include "geometry/cell_integrator.hpp"
-#include "geometry/density_registry.hpp"
 #include "geometry/geometry_error.hpp"
 #include "geometry/placement.hpp"
 #include "geometry/ring_validation.hpp"
-#include "net/delay_registry.hpp"
-#include "net/loss_registry.hpp"
-#include "planners/planner_registry.hpp"
-#include "robot/coverage_law_registry.hpp"
 #include "scenarios/component_reader.hpp"
+#include "scenarios/component_sections.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
+#include "scenarios/section_reader.hpp"
 
 namespace covsim {
 
 namespace {
 
-// The limits docs/scenario-format.md states: what a double resolves and a run can afford.
-constexpr double kMinPeriod = 1e-4;        // s
+// The limits docs/scenario-format.md states: what a double resolves and a run can afford
+// (the periods' are in core/config_key.hpp).
 constexpr double kMaxCoordinate = 1e6;     // m
 constexpr double kMinExtent = 1e-3;        // m: Ω's box diagonal
 constexpr double kMinRelativeEdge = 1e-6;  // an edge against Ω's box diagonal
@@ -80,10 +78,11 @@ std::shared_ptr<const Density> read_density(const JsonValue& v,
                                             const std::filesystem::path& base_dir,
                                             const Environment& env,
                                             std::optional<std::uint64_t> seed) {
-  const ComponentChoice c = read_component(v, density_registry(), "type");
+  const auto& row = component_section<DensityEntry>();
+  const ComponentChoice c = read_component(v, row);
   std::shared_ptr<const Density> d;
   try {
-    d = density_registry().at(c.type).make(DensityContext{env, base_dir, seed}, c.params);
+    d = row.registry().at(c.type).make(DensityContext{env, base_dir, seed}, c.params);
   } catch (const ParamError& e) {
     fail_param(v, e);
   } catch (const std::invalid_argument& e) {
@@ -94,119 +93,59 @@ std::shared_ptr<const Density> read_density(const JsonValue& v,
   return d;
 }
 
-SimTime read_period(const JsonValue& v) {
-  const double s = v.positive();
-  if (s < kMinPeriod || s > 1e6)
-    v.fail(fmt::format("expected a period between {:g} and 1e6 s, found {}", kMinPeriod, s));
-  return SimTime::from_seconds(s);
-}
-
-void read_network(const JsonValue& v, NetworkConfig& n) {
-  v.only_keys({"range", "line_of_sight", "broadcast_period", "random_phase", "staleness", "acquire",
-               "acquire_timeout", "loss", "delay"});
-  if (auto r = v.find("range")) {
-    if (!r->is_null()) n.channel.range = r->positive();
-  }
-  if (auto l = v.find("line_of_sight")) n.channel.line_of_sight = l->boolean();
-  if (auto p = v.find("broadcast_period")) n.broadcast_period = read_period(*p);
-  if (auto p = v.find("random_phase")) n.random_phase = p->boolean();
-  if (auto s = v.find("staleness")) {
-    if (!s->is_null()) n.staleness = read_period(*s);
-  }
-  if (auto a = v.find("acquire")) {
-    const double s = a->non_negative();
-    if (s > 1e6) a->fail(fmt::format("expected at most 1e6 s, found {}", s));
-    n.acquire = SimTime::from_seconds(s);
-  }
-  if (auto a = v.find("acquire_timeout")) {
-    const double s = a->non_negative();
-    if (s > 1e6) a->fail(fmt::format("expected at most 1e6 s, found {}", s));
-    n.acquire_timeout = SimTime::from_seconds(s);
-  }
-  if (auto loss = v.find("loss")) {
-    const ComponentChoice c = read_component(*loss, loss_registry(), "model");
-    try {
-      n.channel.loss = loss_registry().at(c.type).make(c.params);
-    } catch (const ParamError& e) {
-      fail_param(*loss, e);
-    }
-  }
-  if (auto delay = v.find("delay")) {
-    const ComponentChoice c = read_component(*delay, delay_registry(), "model");
-    try {
-      n.channel.delay = delay_registry().at(c.type).make(c.params);
-    } catch (const ParamError& e) {
-      fail_param(*delay, e);
-    }
-  }
-}
-
-void read_coverage(const JsonValue& root, CoverageConfig& c) {
+// The components a coverage run selects, each from its section of the table.
+void read_components(const JsonValue& root, CoverageConfig& c) {
   // null: the ideal network, as if absent (so that a sweep can vary it against others).
-  if (auto n = root.find("network"); n && !n->is_null()) read_network(*n, c.network);
-  if (auto r = root.find("robots")) {
-    if (auto v = r->find("max_speed")) c.max_speed = v->positive();
+  if (auto n = root.find("network"); n && !n->is_null()) {
+    if (auto loss = n->find("loss")) {
+      const auto& row = component_section<LossEntry>();
+      const ComponentChoice choice = read_component(*loss, row);
+      try {
+        c.network.channel.loss = row.registry().at(choice.type).make(choice.params);
+      } catch (const ParamError& e) {
+        fail_param(*loss, e);
+      }
+    }
+    if (auto delay = n->find("delay")) {
+      const auto& row = component_section<DelayEntry>();
+      const ComponentChoice choice = read_component(*delay, row);
+      try {
+        c.network.channel.delay = row.registry().at(choice.type).make(choice.params);
+      } catch (const ParamError& e) {
+        fail_param(*delay, e);
+      }
+    }
   }
   if (auto p = root.find("planner")) {
-    const ComponentChoice choice = read_component(*p, planner_registry(), "type", "tangent_bug");
+    const ComponentChoice choice = read_component(*p, component_section<PlannerEntry>());
     c.planner = PlannerConfig{choice.type, choice.params};
   }
   if (auto k = root.find("controller")) {
-    const ComponentChoice choice =
-        read_component(*k, coverage_law_registry(), "type", c.law.type, {"projection"});
+    // The section's own keys (the projection policy) are read with the fixed sections.
+    std::vector<std::string> own;
+    for (const ParamSpec& spec : scenario_section("controller").schema())
+      own.push_back(spec.name);
+    const ComponentChoice choice = read_component(*k, component_section<LawEntry>(), own);
     c.law = LawConfig{choice.type, choice.params};
-    if (auto p = k->find("projection")) {
-      std::vector<std::string> names;
-      for (const auto& [policy, name] : kProjectionPolicies)
-        names.emplace_back(name);
-      c.projection = *projection_named(p->one_of(names));
-    }
   }
-  if (auto s = root.find("sensor")) {
-    s->only_keys({"range", "period", "noise", "dropout"});
-    if (auto range = s->find("range"))
-      c.sensor.range = range->is_null() ? INFINITY : range->non_negative();
-    if (auto p = s->find("period")) {
-      if (!p->is_null()) c.sensor.period = read_period(*p);
-    }
-    if (auto n = s->find("noise")) {
-      n->only_keys({"sigma"});
-      c.sensor.noise_sigma = n->at("sigma").non_negative();
-    }
-    if (auto d = s->find("dropout")) c.sensor.dropout = d->probability();
-  }
-  if (auto l = root.find("loops")) {
-    l->only_keys({"mode", "loop1_period", "loop2_period"});
-    if (auto m = l->find("mode"))
-      c.mode =
-          m->one_of({"classic", "periodic"}) == "periodic" ? LoopMode::periodic : LoopMode::classic;
-    if (auto p = l->find("loop2_period")) c.loop2_period = read_period(*p);
-    if (auto p = l->find("loop1_period")) {
-      if (c.mode != LoopMode::periodic)
-        p->fail("loop1_period applies to \"mode\": \"periodic\" only");
-      c.loop1_period = read_period(*p);
-    }
-  }
-  if (auto v = root.find("convergence")) {
-    v->only_keys({"position_tolerance", "virtual_tolerance", "spacing_tolerance", "max_time"});
-    // null: the default, as if absent (so that a sweep can undo a file's tolerance).
-    if (auto t = v->find("position_tolerance"); t && !t->is_null())
-      c.position_tolerance = t->positive();
-    if (auto t = v->find("virtual_tolerance"); t && !t->is_null())
-      c.virtual_tolerance = t->positive();
-    if (auto t = v->find("spacing_tolerance")) {
-      c.spacing_tolerance = t->positive();
-      if (*c.spacing_tolerance > 1.0)
-        t->fail(fmt::format("expected a fraction of the robots' spacing, at most 1, found {}",
-                            *c.spacing_tolerance));
-    }
-    if (auto t = v->find("max_time")) c.max_time = read_period(*t);
-  }
-  if (auto m = root.find("metrics")) {
-    m->only_keys({"period", "algebraic_connectivity_robots"});
-    if (auto p = m->find("period")) c.sample_period = read_period(*p);
-    if (auto r = m->find("algebraic_connectivity_robots"))
-      c.algebraic_connectivity_robots = r->unsigned_integer();
+}
+
+// The fixed sections, through their keys (scenario_sections.hpp). A section that shares its
+// object with components leaves their keys to them: the controller's type and parameters,
+// the network's loss and delay.
+void read_fixed_sections(const JsonValue& root, Scenario& s) {
+  for (const ScenarioSection& section : scenario_sections()) {
+    const auto v = root.find(section.path);
+    if (!v || (section.null_is_absent && v->is_null())) continue;
+    bool shared = false;
+    std::vector<std::string> other = section.other_keys;
+    for_each_component_section([&](const auto& row) {
+      if (row.path == section.path) shared = true;
+      if (row.path.rfind(section.path + ".", 0) == 0)
+        other.push_back(row.path.substr(section.path.size() + 1));
+    });
+    if (!shared) check_section_keys(*v, section, other);
+    read_section(*v, section, s);
   }
 }
 
@@ -268,8 +207,7 @@ double start_area(const Placement& p, const Environment& env) {
 // "robots": given positions (perturbed by "jitter" per seed), or "count" robots drawn per seed
 // by "start". Draws come from the seed's "robot-start" stream.
 std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
-                              std::optional<std::uint64_t> seed) {
-  v.only_keys({"positions", "count", "start", "separation", "jitter", "max_speed"});
+                              std::optional<std::uint64_t> seed, const RobotDraw& draw) {
   const auto positions = v.find("positions");
   const auto count = v.find("count");
   if (positions && count) v.fail("expected \"positions\" or \"count\", not both");
@@ -287,7 +225,7 @@ std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
     if (out.empty()) positions->fail("expected at least one robot");
     check_distinct(*positions, out, env);
     if (auto j = v.find("jitter")) {
-      const double sigma = j->non_negative();
+      const double sigma = draw.jitter;
       if (auto s = v.find("separation")) s->fail("\"separation\" goes with \"count\"");
       if (sigma > 0.0) {
         // Each robot moves by a Gaussian step per coordinate, redrawn until it lands in Ω
@@ -320,9 +258,8 @@ std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
   if (n == 0 || n > 100000) count->fail(fmt::format("expected 1 to 100000 robots, found {}", n));
   const JsonValue start = v.at("start");
   const Placement placement = read_start(start);
-  const double separation =
-      v.find("separation") ? v.at("separation").non_negative()
-                           : 0.05 * std::sqrt(start_area(placement, env) / static_cast<double>(n));
+  const double separation = draw.separation.value_or(
+      0.05 * std::sqrt(start_area(placement, env) / static_cast<double>(n)));
   RandomStream rng = stream(start);
   try {
     out = place_points(env, placement, n, separation, rng);
@@ -334,12 +271,7 @@ std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
 
 // The run's size before it starts: motion steps per robot and trajectory rows, each against
 // its limit (raised in "limits"); the error points at max_time, what makes a run long.
-void check_limits(const JsonValue& root, Scenario& s) {
-  if (auto l = root.find("limits")) {
-    l->only_keys({"motion_steps", "trajectory_rows"});
-    if (auto m = l->find("motion_steps")) s.limits.motion_steps = m->positive();
-    if (auto m = l->find("trajectory_rows")) s.limits.trajectory_rows = m->positive();
-  }
+void check_limits(const JsonValue& root, const Scenario& s) {
   const CoverageConfig& c = s.coverage;
   const auto at = root.find("convergence") && root.at("convergence").find("max_time")
                       ? *root.at("convergence").find("max_time")
@@ -364,6 +296,19 @@ void check_limits(const JsonValue& root, Scenario& s) {
   }
 }
 
+// The keys a scenario file may have at its top: the environment, the seed, and the sections.
+std::vector<std::string> top_level_keys() {
+  std::vector<std::string> keys{"environment", "seed"};
+  const auto add = [&](const std::string& path) {
+    const std::string top = path.substr(0, path.find('.'));
+    if (std::find(keys.begin(), keys.end(), top) == keys.end()) keys.push_back(top);
+  };
+  for_each_component_section([&](const auto& row) { add(row.path); });
+  for (const ScenarioSection& section : scenario_sections())
+    add(section.path);
+  return keys;
+}
+
 }  // namespace
 
 Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
@@ -372,19 +317,15 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   s.source = source;
   s.json = json;
   const JsonValue root(s.json, source);
-  root.only_keys({"environment", "density", "robots", "seed", "planner", "controller", "sensor",
-                  "loops", "convergence", "metrics", "network", "recording", "limits"});
+  root.only_keys(top_level_keys());
   if (auto seed = root.find("seed")) s.seed = seed->unsigned_integer();
   s.base_dir = base_dir;
   s.environment = read_environment(root.at("environment"));
   s.density = read_density(root.at("density"), base_dir, *s.environment, s.seed);
-  if (auto r = root.find("robots")) s.robot_positions = read_robots(*r, *s.environment, s.seed);
-  read_coverage(root, s.coverage);
-  if (auto r = root.find("recording")) {
-    r->only_keys({"trajectory_period", "compress"});
-    if (auto p = r->find("trajectory_period")) s.recording.trajectory_period = p->non_negative();
-    if (auto c = r->find("compress")) s.recording.compress = c->boolean();
-  }
+  read_fixed_sections(root, s);
+  if (auto r = root.find("robots"))
+    s.robot_positions = read_robots(*r, *s.environment, s.seed, s.draw);
+  read_components(root, s.coverage);
   check_limits(root, s);
   // Checks that need the environment (grids too fine for it) fail here, not at a run's start.
   const auto check = [&](const auto& entry, const Params& params, const char* key) {
@@ -396,9 +337,11 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
     }
   };
   if (root.find("planner"))
-    check(planner_registry().at(s.coverage.planner.type), s.coverage.planner.params, "planner");
+    check(component_section<PlannerEntry>().registry().at(s.coverage.planner.type),
+          s.coverage.planner.params, "planner");
   if (root.find("controller"))
-    check(coverage_law_registry().at(s.coverage.law.type), s.coverage.law.params, "controller");
+    check(component_section<LawEntry>().registry().at(s.coverage.law.type), s.coverage.law.params,
+          "controller");
   return s;
 }
 

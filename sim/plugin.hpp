@@ -13,18 +13,18 @@
 // the plugin loads; a plugin built for another version is refused with both versions named.
 // A program that links covsim::covsim adds its components the same way, through
 // registries(), and calls run_coverage or run_sweep itself.
+#include <tuple>
+
 #include "core/version.hpp"
-#include "geometry/density_registry.hpp"
-#include "net/delay_registry.hpp"
-#include "net/loss_registry.hpp"
-#include "planners/planner_registry.hpp"
-#include "robot/coverage_law_registry.hpp"
+#include "scenarios/component_sections.hpp"
 
 namespace covsim {
 
 // Changes whenever a registry entry or an extension interface changes incompatibly.
 inline constexpr int kPluginApiVersion = 1;
 
+// The registries of component_sections(), by name, for plugins; built from that table (in its
+// order, which the members' types check), so that it stays the one list of them.
 struct Registries {
   Registry<PlannerEntry>& planners;
   Registry<LawEntry>& laws;
@@ -34,8 +34,8 @@ struct Registries {
 };
 
 inline Registries registries() {
-  return Registries{planner_registry(), coverage_law_registry(), loss_registry(), delay_registry(),
-                    density_registry()};
+  return std::apply([](const auto&... row) { return Registries{row.registry()...}; },
+                    component_sections());
 }
 
 }  // namespace covsim

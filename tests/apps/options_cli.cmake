@@ -146,3 +146,38 @@ bad("--autonomous on planners" "applies to laws only" list planners --autonomous
 # random-env's seed is read strictly, as run's is.
 bad("random-env --seed -1" "--seed: expected a whole number" random-env --seed -1)
 bad("random-env --seed 1.5" "--seed: expected a whole number" random-env --seed 1.5)
+
+# `list sensor`, `list sections`: each fixed section's keys with kind, default, unit, bounds
+# and help, from the same schemas the loader reads.
+run_ok(sensor list sensor)
+if(NOT sensor_out MATCHES "range +number +default null \\[m\\], >= 0, null allowed +sensing range")
+  message(FATAL_ERROR "list sensor does not show sensor.range: ${sensor_out}")
+endif()
+run_ok(all list)
+if(NOT all_out MATCHES "section sensor:" OR NOT all_out MATCHES "planners \\(\"planner\": {\"type\"}\\)")
+  message(FATAL_ERROR "list shows not both components and sections: ${all_out}")
+endif()
+run_ok(keys list sections --names)
+foreach(key robots.max_speed sensor.range sensor.noise.sigma loops.loop1_period
+            network.acquire_timeout limits.trajectory_rows)
+  if(NOT keys_out MATCHES "(^|\n)${key}\n")
+    message(FATAL_ERROR "list sections --names lacks ${key}: ${keys_out}")
+  endif()
+endforeach()
+run_ok(md list sections --markdown)
+if(NOT md_out MATCHES "<!-- begin sensor -->\n\\| key \\| kind \\|.*\\| `range` \\| number \\| m \\|")
+  message(FATAL_ERROR "list sections --markdown: ${md_out}")
+endif()
+bad("--markdown on planners" "applies to sections only" list planners --markdown)
+# The documentation's tables written from the schemas are the ones checked in.
+configure_file(${SOURCE}/docs/scenario-format.md ${WORK}/scenario-format.md COPYONLY)
+run_ok(update list --update-docs ${WORK}/scenario-format.md)
+file(READ ${SOURCE}/docs/scenario-format.md checked_in)
+file(READ ${WORK}/scenario-format.md regenerated)
+if(NOT checked_in STREQUAL regenerated)
+  message(FATAL_ERROR "docs/scenario-format.md differs from the schemas: run covsim list "
+                      "--update-docs docs/scenario-format.md")
+endif()
+file(WRITE ${WORK}/no-markers.md "nothing here\n")
+bad("--update-docs without markers" "no-markers.md: no lines" list --update-docs
+    ${WORK}/no-markers.md)

@@ -121,11 +121,11 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
   expect_error("{" + kSquare + ", " + d + R"(, "network": {"acquire": -1}})",
                "$.network.acquire: expected a non-negative number");
   expect_error("{" + kSquare + ", " + d + R"(, "network": {"acquire_timeout": 1e9}})",
-               "$.network.acquire_timeout: expected at most 1e6 s");
+               "$.network.acquire_timeout: expected a non-negative number of seconds, at most 1e6");
   expect_error("{" + kSquare + ", " + d + R"(, "loops": {"loop1_period": 1}})",
                "$.loops.loop1_period: loop1_period applies to");
   expect_error("{" + kSquare + ", " + d + R"(, "loops": {"mode": "periodic", "loop2_period": 0}})",
-               "$.loops.loop2_period: expected a positive number");
+               "$.loops.loop2_period: expected a period between 0.0001 and 1e6 s, found 0");
 }
 
 TEST_CASE("planners and controllers with their parameters", "[scenario]") {
@@ -218,7 +218,8 @@ TEST_CASE("tolerances may be a fraction of the robots' spacing", "[scenario]") {
   expect_error("{" + kSquare + ", " + d + R"(, "convergence": {"spacing_tolerance": 2}})",
                "$.convergence.spacing_tolerance: expected a fraction of the robots' spacing");
   expect_error("{" + kSquare + ", " + d + R"(, "convergence": {"spacing_tolerance": 0}})",
-               "$.convergence.spacing_tolerance: expected a positive number");
+               "$.convergence.spacing_tolerance: expected a fraction of the robots' spacing, > 0 "
+               "and at most 1, found 0");
 }
 
 TEST_CASE("the projection policy belongs to the controller section, whatever its type",
