@@ -3,20 +3,10 @@
 // reading and the longest step the robot may take, propose where to go next.
 #include <string_view>
 
+#include "planners/plan_status.hpp"
 #include "planners/sensor_reading.hpp"
 
 namespace covsim {
-
-enum class PlanStatus {
-  moving,     // on the way
-  reached,    // at the goal
-  projected,  // the goal is unreachable; settled at the closest reachable boundary point
-  stalled,    // gave up (no progress, or the path budget ran out)
-};
-std::string_view to_string(PlanStatus s);
-inline bool is_settled(PlanStatus s) {
-  return s != PlanStatus::moving;
-}
 
 struct PlanStep {
   Vec2 next;  // at most max_step from the reading's position

@@ -15,20 +15,6 @@ Vec2 unit(Vec2 v) {
 }
 }  // namespace
 
-std::string_view to_string(PlanStatus s) {
-  switch (s) {
-    case PlanStatus::moving:
-      return "moving";
-    case PlanStatus::reached:
-      return "reached";
-    case PlanStatus::projected:
-      return "projected";
-    case PlanStatus::stalled:
-      return "stalled";
-  }
-  return "unknown";
-}
-
 std::string_view to_string(TangentBug::Mode m) {
   switch (m) {
     case TangentBug::Mode::motion_to_goal:

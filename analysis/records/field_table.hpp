@@ -1,13 +1,14 @@
 #pragma once
 // Each result record (final.json, a sweep's runs.csv and runs/<i>.json, summary.csv,
-// metrics.csv) is described once, as a table of fields: its name (a column, or a dotted
-// JSON path), its unit, what it means, and how it is read from the record (and, for the
-// records covsim reads back, written into one). Every writer and reader walks the table;
+// metrics.csv) is described as a table of fields: its name (a column, or a dotted JSON
+// path), its unit, what it means, and how it is read from the record (and, for the records
+// covsim reads back, written into one). Every writer and reader walks the table;
 // docs/outputs.md and docs/sweeps.md list the same names, which a test checks.
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -34,6 +35,23 @@ struct Field {
 
 template <class Record>
 using FieldTable = std::vector<Field<Record>>;
+
+// A field that reads and writes one member.
+template <class R, class T>
+Field<R> member_field(std::string name, FieldKind kind, std::string unit, std::string description,
+                      T R::*m) {
+  return Field<R>{std::move(name),
+                  kind,
+                  std::move(unit),
+                  std::move(description),
+                  [m](const R& r) { return nlohmann::ordered_json(r.*m); },
+                  [m](R& r, const nlohmann::json& j) { r.*m = j.get<T>(); }};
+}
+
+// A value not computed (NaN) is null: an empty cell in CSV.
+inline nlohmann::ordered_json number_or_null(double v) {
+  return std::isnan(v) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(v);
+}
 
 // A CSV field: text quoted when it holds a comma, quote or newline.
 inline std::string csv_quote(const std::string& s) {

@@ -184,16 +184,17 @@ RunFiles read_run_files(const fs::path& dir) {
                                     compressed.filename().string()));
   }
   const fs::path trajectory = has_compressed ? compressed : plain;
-  read_csv(trajectory, "t,robot,x,y,vx,vy,tx,ty,rx,ry", 10, [&](const std::vector<double>& v) {
-    if (!(v[1] >= 0 && v[1] < static_cast<double>(o.robots.size())))
-      throw ScenarioError(trajectory.string() + ": robot index out of range");
-    f.trajectory.push_back(TrajectoryRow{v[0],
-                                         static_cast<std::uint32_t>(v[1]),
-                                         {v[2], v[3]},
-                                         {v[4], v[5]},
-                                         {v[6], v[7]},
-                                         {v[8], v[9]}});
-  });
+  read_csv(trajectory, trajectory_header(), kTrajectoryColumns.size(),
+           [&](const std::vector<double>& v) {
+             if (!(v[1] >= 0 && v[1] < static_cast<double>(o.robots.size())))
+               throw ScenarioError(trajectory.string() + ": robot index out of range");
+             f.trajectory.push_back(TrajectoryRow{v[0],
+                                                  static_cast<std::uint32_t>(v[1]),
+                                                  {v[2], v[3]},
+                                                  {v[4], v[5]},
+                                                  {v[6], v[7]},
+                                                  {v[8], v[9]}});
+           });
   // metrics.csv: the columns the figures need, by their names in the header.
   const fs::path metrics = dir / "metrics.csv";
   std::vector<const Field<MetricsSample>*> columns;

@@ -15,8 +15,6 @@ namespace covsim {
 
 namespace {
 
-constexpr const char* kTrajectoryHeader = "t,robot,x,y,vx,vy,tx,ty,rx,ry\n";
-
 // Bitwise: -0.0 and 0.0 are written differently ("-0", "0").
 bool same(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
@@ -31,6 +29,13 @@ char* put(char* p, double x) {
 }
 
 }  // namespace
+
+std::string trajectory_header() {
+  std::string out;
+  for (std::string_view c : kTrajectoryColumns)
+    (out += out.empty() ? "" : ",") += c;
+  return out;
+}
 
 std::string_view trajectory_file_name(bool compressed) {
   return compressed ? "trajectory.csv.gz" : "trajectory.csv";
@@ -122,7 +127,7 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const std::vector<Vec
   if (recording.compress) gzip_ = std::make_unique<GzipWriter>(trajectory_.stream());
   for (RobotTrack& k : tracks_)
     k.tolerance = track_tolerance;
-  trajectory_buffer_ = kTrajectoryHeader;
+  trajectory_buffer_ = trajectory_header() + "\n";
   metrics_buffer_ = csv_header(metrics_fields()) + "\n";
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const Vec2 s = starts[i];

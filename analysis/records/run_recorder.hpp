@@ -5,6 +5,7 @@
 // appear only on commit(). It keeps what it wrote (each robot's track and the cost series)
 // for the figures. A trajectory period thins the recording: a robot's row is written when
 // that much time has passed since its last, and its last state at the end of the run.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
@@ -29,6 +30,13 @@ struct TrajectoryRow {
   std::uint32_t robot;
   Vec2 position, virtual_generator, virtual_target, real_target;
 };
+
+// trajectory.csv's columns, in the order of a row's values above: the writer's header and
+// what the reader expects.
+inline constexpr std::array<std::string_view, 10> kTrajectoryColumns{
+    "t", "robot", "x", "y", "vx", "vy", "tx", "ty", "rx", "ry"};
+// The columns joined by commas.
+std::string trajectory_header();
 
 // "trajectory.csv", or "trajectory.csv.gz" when compressed.
 std::string_view trajectory_file_name(bool compressed);

@@ -25,6 +25,7 @@ from ._covsim import (
     Simulation,
     __version__,
     components,
+    measures,
     register_law,
     register_planner,
 )
@@ -33,7 +34,7 @@ from . import _covsim
 __all__ = [
     "Environment", "Knowledge", "Robot", "Scenario", "ScenarioError", "SensorReading",
     "Simulation", "cells", "components", "draw_environment", "environment", "load_run",
-    "register_law",
+    "measures", "register_law",
     "register_planner", "sweep", "__version__",
 ]
 

@@ -72,15 +72,6 @@ struct PyReading {
   SensorReading r;
 };
 
-PlanStatus status_named(const std::string& s) {
-  for (PlanStatus p :
-       {PlanStatus::moving, PlanStatus::reached, PlanStatus::projected, PlanStatus::stalled}) {
-    if (to_string(p) == s) return p;
-  }
-  throw py::value_error("a planner's status must be moving, reached, projected or stalled, not \"" +
-                        s + "\"");
-}
-
 class PyPlanner final : public Planner {
  public:
   PyPlanner(PyRef obj, std::string name) : obj_(std::move(obj)), name_(std::move(name)) {
@@ -103,7 +94,12 @@ class PyPlanner final : public Planner {
     py::gil_scoped_acquire gil;
     const py::tuple t = obj_->attr("step")(PyReading{reading}, max_step);
     if (t.size() != 2) throw py::value_error("a planner's step must return (next, status)");
-    return PlanStep{to_point(t[0]), status_named(t[1].cast<std::string>())};
+    const Vec2 next = to_point(t[0]);
+    try {
+      return PlanStep{next, status_named(t[1].cast<std::string>())};
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(std::string("a planner's status: ") + e.what());
+    }
   }
 
  private:

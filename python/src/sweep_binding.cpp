@@ -10,6 +10,26 @@ namespace covsim::python {
 
 void bind_sweep(py::module_& m) {
   m.def(
+      "measures",
+      [] {
+        py::list out;
+        for (const Measure& x : measures()) {
+          py::dict d;
+          d["name"] = x.name;
+          d["unit"] = x.unit;
+          d["description"] = x.description;
+          d["final_json"] = x.in_final();
+          d["column"] = x.run_place ? py::cast(x.column()) : py::none();
+          d["summarized"] = x.summarized;
+          out.append(d);
+        }
+        return out;
+      },
+      "The measures of a run (docs/outputs.md): per measure a dict with its name (its JSON "
+      "path in final.json when final_json is true), unit, description, column (of a sweep's "
+      "runs and runs.csv; None if a sweep does not record it) and whether summary.csv "
+      "summarises it.");
+  m.def(
       "_sweep",
       [](const std::string& file, const std::string& out, std::size_t jobs, bool keep_series) {
         const SweepSpec spec = load_sweep(file);

@@ -27,6 +27,23 @@ def test_sweep_rows_equal_runs_csv(scenarios, tmp_path):
     assert list(one["fingerprint"]) == list(rows["fingerprint"])
 
 
+def test_measures_name_the_sweep_columns_and_final_json_keys(scenarios, tmp_path):
+    spec = {"scenario": str(scenarios / "u_shape.json"), "seeds": [1]}
+    rows = covsim.sweep(spec, out=tmp_path / "sw")
+    measures = covsim.measures()
+    columns = [m["column"] for m in measures if m["column"] is not None]
+    assert sorted(columns) == sorted(rows.columns[3:-1])  # after run, setting, seed; error
+    final = covsim.Simulation(covsim.Scenario.from_file(scenarios / "u_shape.json")).run()
+    in_final = [m["name"] for m in measures if m["final_json"]]
+    assert in_final[:3] == list(final)[:3]
+    for name in in_final:
+        value = final
+        for key in name.split("."):
+            value = value[key]  # a KeyError names a measure final.json lacks
+    units = {m["column"]: m["unit"] for m in measures if m["column"] is not None}
+    assert units["time_to_10_percent"] == "s" and units["planner_step_time"] == "µs"
+
+
 def test_a_sweep_resumes_into_its_folder(scenarios, tmp_path):
     spec = {"scenario": str(scenarios / "u_shape.json"),
             "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.0, 0.4]},

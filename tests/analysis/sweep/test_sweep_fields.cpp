@@ -1,0 +1,108 @@
+// A sweep's records follow the table of measures (analysis/records/measure.cpp): runs.csv and
+// runs/<i>.json have a column for each measure a sweep records, in its place, summary.csv
+// the statistics of each summarised one, and docs/sweeps.md lists the same.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "analysis/records/result_fields.hpp"
+#include "analysis/sweep/sweep_runner.hpp"
+#include "analysis/sweep/sweep_tables.hpp"
+
+using namespace covsim;
+namespace fs = std::filesystem;
+
+namespace {
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> split(const std::string& s, const std::string& by) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  for (std::size_t at = s.find(by); at != std::string::npos;
+       start = at + by.size(), at = s.find(by, start))
+    out.push_back(s.substr(start, at - start));
+  out.push_back(s.substr(start));
+  return out;
+}
+
+// The runs.csv columns of the measures, in their places, read from the table itself.
+std::vector<std::string> measure_columns() {
+  std::vector<std::string> out;
+  for (int place = 0;; ++place) {
+    const auto m = std::find_if(measures().begin(), measures().end(),
+                                [&](const Measure& x) { return x.run_place == place; });
+    if (m == measures().end()) return out;
+    out.push_back(m->column());
+  }
+}
+
+std::vector<std::string> summarized_columns() {
+  std::vector<std::string> out;
+  for (const std::string& c : measure_columns()) {
+    const auto m = std::find_if(measures().begin(), measures().end(),
+                                [&](const Measure& x) { return x.run_place && x.column() == c; });
+    if (m->summarized) out.push_back(c);
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("a sweep's files have a column for every measure it records", "[fields]") {
+  const fs::path dir =
+      fs::temp_directory_path() / ("covsim-sweep-fields-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "sweep.json")
+      << R"({"scenario": ")" << COVSIM_SOURCE_DIR << R"(/scenarios/u_shape.json",
+    "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.2]}, "seeds": [1]})";
+  const SweepSpec spec = load_sweep(dir / "sweep.json");
+  const auto results = run_sweep(spec, dir / "out", SweepOptions{1, false, 0, 1});
+  write_runs_csv(dir / "out" / "runs.csv", spec, results);
+  write_summary_csv(dir / "out" / "summary.csv", spec, results);
+
+  const std::vector<std::string> columns = measure_columns();
+  REQUIRE(columns.size() == run_fields().size());  // no place left out or taken twice
+  std::vector<std::string> runs = {"run", "setting", "network.loss.model", "network.loss.p",
+                                   "seed"};
+  runs.insert(runs.end(), columns.begin(), columns.end());
+  runs.push_back("error");
+  const std::vector<std::string> lines = split(read_text(dir / "out" / "runs.csv"), "\n");
+  CHECK(split(lines.at(0), ",") == runs);
+  CHECK(split(lines.at(1), ",").size() == runs.size());
+
+  const auto result = nlohmann::ordered_json::parse(read_text(result_file(dir / "out", 0)));
+  std::vector<std::string> keys;
+  for (const auto& [k, v] : result.items())
+    keys.push_back(k);
+  keys.erase(keys.begin());  // "index"
+  CHECK(keys == columns);
+
+  const std::string summary = split(read_text(dir / "out" / "summary.csv"), "\n").at(0);
+  CHECK(sweep_metrics() == summarized_columns());
+  for (const std::string& c : summarized_columns()) {
+    INFO(c);
+    CHECK(summary.find("," + c + "_mean,") != std::string::npos);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("docs/sweeps.md lists runs.csv's columns and summary.csv's metrics from the table",
+          "[fields]") {
+  const std::string text = read_text(fs::path(COVSIM_SOURCE_DIR) / "docs" / "sweeps.md");
+  std::smatch m;
+  REQUIRE(std::regex_search(text, m,
+                            std::regex("`run,setting,<parameters\\.\\.\\.>,seed,([^`]*),error`")));
+  CHECK(split(m[1].str(), ",") == measure_columns());
+  REQUIRE(std::regex_search(text, m, std::regex("then for each of\\s*`([^`]*)`:")));
+  CHECK(split(m[1].str(), ", ") == summarized_columns());
+}
