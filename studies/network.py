@@ -40,8 +40,9 @@ COLUMNS = ["runs", "converged", "time_to_1_percent", "sim_time", "cost_real",
            "messages_delivered", "info_age_mean", "area_claimed_by_several", "connected"]
 # The plotted measures: (column, name, unit, whether the axis starts at zero: times do,
 # so that they compare; the cost's axis spans its values).
-PLOTS = [("sim_time", "time to converge", " [s]", True),
-         ("cost_real", "final cost H (real)", "", False)]
+# The measures plotted: (column, axis name, axis from zero); units from covsim.measures().
+PLOTS = [("sim_time", "time to converge", True),
+         ("cost_real", "final cost H (real)", False)]
 
 
 def grids(scenario):
@@ -95,9 +96,10 @@ def plot(plt, out, scenario, parameter, label, measure, file):
     ax.fill_between(summary["_x"], mean - ci, mean + ci, color="C0", alpha=0.2,
                     linewidth=0, label="95% confidence interval")
     ax.plot(summary["_x"], mean, color="C0", marker="o", markersize=4, label="mean")
-    _, name, unit, from_zero = next(p for p in PLOTS if p[0] == measure)
+    _, name, from_zero = next(p for p in PLOTS if p[0] == measure)
+    unit = next(m["unit"] for m in study.covsim_module().measures() if m["column"] == measure)
     ax.set_xlabel(label)
-    ax.set_ylabel(name + unit)
+    ax.set_ylabel(f"{name} [{unit}]" if unit else name)
     if from_zero and runs[measure].min() >= 0:
         ax.set_ylim(bottom=0)
     ax.set_title(f"{scenario}: {name}, mean over {len(runs) // len(summary)} runs per setting",
