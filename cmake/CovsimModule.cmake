@@ -19,3 +19,18 @@ function(covsim_add_module name)
   install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION include/covsim/${folder}
           FILES_MATCHING PATTERN "*.hpp")
 endfunction()
+
+# covsim_precompile(TARGET HEADER...): the heavy third-party headers a target's translation
+# units all include (nlohmann/json through scenarios/scenario.hpp, CLI11, Catch2, pybind11),
+# parsed once per target instead of once per file. Off with -DCOVSIM_PCH=OFF. ccache caches
+# such compilations with the sloppiness scripts/build sets.
+function(covsim_precompile target)
+  if(NOT COVSIM_PCH)
+    return()
+  endif()
+  target_precompile_headers(${target} PRIVATE ${ARGN})
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    # Without it clang stamps the header's time into the PCH, and ccache cannot reuse it.
+    target_compile_options(${target} PRIVATE -Xclang -fno-pch-timestamp)
+  endif()
+endfunction()
