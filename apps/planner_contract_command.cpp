@@ -18,7 +18,6 @@
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
-#include "geometry/environment.hpp"
 #include "io/atomic_file.hpp"
 #include "planners/planner_registry.hpp"
 
@@ -129,13 +128,9 @@ void add_planner_contract_command(CLI::App& app) {
           fmt::format("planner-contract: --planner: unknown planner \"{}\" (registered: {})",
                       o->setup.planner, fmt::join(planner_registry().names(), ", ")));
     }
-    // The contract is for planners that keep the robot in Ω; `none` drives through walls.
-    const Environment square({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {});
-    if (!make_planner(o->setup.planner, square)->avoids_obstacles()) {
-      throw InputError(fmt::format(
-          "planner-contract: --planner: planner \"{}\" does not avoid obstacles (it drives "
-          "through walls), and the contract checks planners that keep the robot in Ω",
-          o->setup.planner));
+    if (const std::optional<std::string> why = contract_refusal(o->setup.planner)) {
+      throw InputError(
+          fmt::format("planner-contract: --planner: planner \"{}\" {}", o->setup.planner, *why));
     }
     o->setup.range = parse_range(o->range);
     o->setup.family = o->family == "combs" ? CaseFamily::combs : CaseFamily::courses;

@@ -67,6 +67,18 @@ struct LawContext {
   const CellIntegrator& integrator;
 };
 
+// What a law promises, checked by the law contract suite (analysis/contract/law_contract).
+struct LawContract {
+  // Lloyd's step in any Ω: its target is the centroid of the robot's Voronoi cell ∩ Ω among
+  // the generators it knows, so a step of every robot to its target never raises the
+  // coverage cost H, and a centroidal configuration is at rest.
+  bool lloyd = false;
+  // In a convex Ω, where every distance is Euclidean: how far its target may lie from the
+  // segment from its generator to its cell's centroid (a Lloyd step, damped or not), for its
+  // parameters in that Ω; unset: no promise beyond `lloyd`'s.
+  std::function<double(const Environment&, const Params&)> convex_step_tolerance;
+};
+
 struct LawEntry : ComponentInfo {
   std::function<std::unique_ptr<CoverageLaw>(const LawContext&, const Params&)> make;
   // Optional: checks that need the environment, run when a scenario is loaded.
@@ -74,6 +86,7 @@ struct LawEntry : ComponentInfo {
   // Whether it computes its own targets (a coverage law proper); false for a law whose
   // targets a driving program sets (external), which comparisons of laws leave out.
   bool autonomous = true;
+  LawContract contract;
 };
 
 // A scenario's "controller": the law, and its parameters validated against its schema.

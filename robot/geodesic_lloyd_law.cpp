@@ -46,6 +46,9 @@ LawEntry geodesic_lloyd_entry() {
                        "resolution too fine for this environment: more than 4194304 cells");
     }
   };
+  // In a convex Ω its Lloyd point is the centroid of the cell's lattice points: within a
+  // lattice spacing of the cell's own.
+  e.contract.convex_step_tolerance = resolution;
   e.make = [resolution](const LawContext& ctx, const Params& p) {
     return std::make_unique<GeodesicLloydLaw>(ctx.environment, ctx.density,
                                               resolution(ctx.environment, p), p.number("gain"));

@@ -16,6 +16,7 @@ LawEntry virtual_generators_entry() {
   e.description =
       "the paper's: Lloyd on virtual generators that move as if Ω were convex; real targets "
       "projected onto Ω";
+  e.contract.lloyd = true;
   e.make = [](const LawContext& ctx, const Params&) {
     return std::make_unique<VirtualGeneratorsLaw>(ctx.integrator);
   };

@@ -309,6 +309,30 @@ ContractSummary run_contract(const ContractSetup& setup, std::uint64_t seed, std
   return s;
 }
 
+std::optional<std::string> contract_refusal(std::string_view planner) {
+  planner_registry().at(planner);  // names the registered ones if unknown
+  const Environment square({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {});
+  if (make_planner(planner, square)->avoids_obstacles()) return std::nullopt;
+  return "does not avoid obstacles (it drives through walls), and the contract checks planners "
+         "that keep the robot in Ω";
+}
+
+RegistryContract run_registry_contract(const ContractSetup& setup, std::uint64_t seed,
+                                       std::uint64_t first, std::uint64_t count, unsigned jobs) {
+  RegistryContract out;
+  for (const std::string& name : planner_registry().names()) {
+    if (std::optional<std::string> why = contract_refusal(name)) {
+      out.refused.emplace_back(name, std::move(*why));
+      continue;
+    }
+    ContractSetup s = setup;
+    s.planner = name;
+    s.make = nullptr;
+    out.checked.emplace_back(name, run_contract(s, seed, first, count, jobs));
+  }
+  return out;
+}
+
 RangeCurve range_curve(const ContractSetup& setup, const std::vector<double>& ranges,
                        std::uint64_t seed, std::uint64_t first, std::uint64_t count,
                        unsigned jobs) {

@@ -28,6 +28,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/vec2.hpp"
@@ -102,6 +103,21 @@ struct ContractSummary {
 ContractSummary run_contract(const ContractSetup& setup, std::uint64_t seed, std::uint64_t first,
                              std::uint64_t count, unsigned jobs = 1,
                              const std::function<void(const ContractResult&)>& progress = {});
+
+// Why the suite does not check a registered planner, if it does not: a planner that does not
+// avoid obstacles (Planner::avoids_obstacles(): `none`) drives through walls, and the
+// contract is about keeping the robot in Ω. Throws std::invalid_argument for an unknown name.
+std::optional<std::string> contract_refusal(std::string_view planner);
+
+// The suite over every entry of planner_registry() as it stands (a plugin's or a program's
+// planners included, if registered first), each on the same cases of `setup` (its planner
+// name aside) and checked for what its entry declares.
+struct RegistryContract {
+  std::vector<std::pair<std::string, ContractSummary>> checked;  // in registry order
+  std::vector<std::pair<std::string, std::string>> refused;      // name, reason
+};
+RegistryContract run_registry_contract(const ContractSetup& setup, std::uint64_t seed,
+                                       std::uint64_t first, std::uint64_t count, unsigned jobs = 1);
 
 // The range effect: the same cases at each sensor range. Per range, over the cases every
 // range reached with L* > 0: the mean of path / L*, and the mean and worst of the path over

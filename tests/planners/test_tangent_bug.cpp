@@ -109,10 +109,22 @@ TEST_CASE("TangentBug in open space goes straight", "[tangent_bug]") {
 }
 
 TEST_CASE("TangentBug ends within its path budget even when cornered", "[tangent_bug]") {
-  // A goal outside the room: the outer ring is circled once, then the closest point.
+  // A goal outside the room: at most once round the outer ring, then the closest point (a
+  // contact sensor goes the whole way round, 19.34 m; an unlimited range sees that the
+  // closest point is (4, 2) and goes straight there).
   const Environment env({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {});
-  for (double r : kRanges)
+  const double budget =
+      TangentBugParams::for_environment(env.diameter(), boundary_length(env)).path_budget;
+  CHECK(budget == Approx(10 * (16 + std::sqrt(32.0))));  // 10 × (∂Ω + diameter)
+  // Straight to the wall at (4, 1.75), once round the 16 m ring, and 0.25 m to (4, 2).
+  const double once_round = 0.75 * std::sqrt(17.0) + 16.0 + 0.25;
+  for (double r : kRanges) {
     expect_projected(env, {1, 1}, {5, 2}, r);
+    const PlannerRun run = go(env, {1, 1}, {5, 2}, r);
+    INFO("range " << r << ": path " << run.length << " m");
+    CHECK(run.length <= budget);
+    CHECK(run.length <= once_round + 1e-6);
+  }
 }
 
 namespace {

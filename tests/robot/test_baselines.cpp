@@ -4,6 +4,8 @@
 
 #include "geometry/visibility_graph.hpp"
 #include "net/bernoulli_loss.hpp"
+#include "planners/planner_registry.hpp"
+#include "robot/coverage_law_registry.hpp"
 #include "scenarios/scenario.hpp"
 #include "sim/coverage_run.hpp"
 #include "tests/robot/paper_scenarios.hpp"
@@ -13,12 +15,33 @@ using covsim::test::MotionChecker;
 using covsim::test::paper;
 
 namespace {
-// A coverage law by name; geodesic_lloyd with the given lattice spacing.
+// A coverage law by name, with the given lattice spacing if it integrates on a lattice.
 LawConfig law(const std::string& type, std::optional<double> resolution = std::nullopt) {
   LawConfig c;
   c.type = type;
-  if (type == "geodesic_lloyd" && resolution) c.params.set("resolution", *resolution);
+  if (resolution && find_param(coverage_law_registry().at(type).params, "resolution") != nullptr)
+    c.params.set("resolution", *resolution);
   return c;
+}
+
+// The registered laws that compute their own targets (not a driving program's).
+std::vector<std::string> autonomous_laws() {
+  std::vector<std::string> out;
+  for (const LawEntry& e : coverage_law_registry().entries()) {
+    if (e.autonomous) out.push_back(e.name);
+  }
+  return out;
+}
+
+// The registered planners that keep the robot in Ω, and of those the complete ones.
+std::vector<std::string> planners(bool complete_only) {
+  const Environment square({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {});
+  std::vector<std::string> out;
+  for (const PlannerEntry& e : planner_registry().entries()) {
+    if (make_planner(e.name, square)->avoids_obstacles() && (e.contract.complete || !complete_only))
+      out.push_back(e.name);
+  }
+  return out;
 }
 }  // namespace
 
@@ -189,8 +212,10 @@ TEST_CASE("a planner that stalls short of a target outside Ω is sent to its pro
   CHECK(out.stalled_time > 0.0);
 }
 
-TEST_CASE("Euclidean Lloyd with an exact planner ends at the centroids", "[baseline]") {
-  for (const char* planner : {"visibility_graph", "grid_astar", "tangent_bug"}) {
+TEST_CASE("Euclidean Lloyd with a complete planner ends at the centroids", "[baseline]") {
+  const std::vector<std::string> complete = planners(true);
+  CHECK(complete.size() >= 3);  // tangent_bug, grid_astar, visibility_graph
+  for (const std::string& planner : complete) {
     Scenario s = paper("l_shape.json");
     s.coverage.law = law("euclidean_lloyd");
     s.coverage.planner.type = planner;
@@ -204,10 +229,14 @@ TEST_CASE("Euclidean Lloyd with an exact planner ends at the centroids", "[basel
 
 TEST_CASE("every planner and controller runs the paper's scenarios inside Ω and ends",
           "[baseline]") {
+  // Every registered law that sets its own targets, with every planner that avoids
+  // obstacles (`none` leaves Ω by design: the departures are tested above).
+  const std::vector<std::string> laws = autonomous_laws(), all = planners(false);
+  CHECK(laws.size() >= 3);
+  CHECK(all.size() >= 5);
   for (const char* name : {"l_shape.json", "two_obstacles.json", "fig2d.json"}) {
-    for (const char* k : {"virtual_generators", "euclidean_lloyd", "geodesic_lloyd"}) {
-      for (const char* planner :
-           {"tangent_bug", "potential_field", "grid_astar", "visibility_graph", "straight_line"}) {
+    for (const std::string& k : laws) {
+      for (const std::string& planner : all) {
         Scenario s = paper(name);
         s.coverage.law = law(k, s.environment->diameter() / 40.0);
         s.coverage.planner.type = planner;
@@ -224,7 +253,10 @@ TEST_CASE("every planner and controller runs the paper's scenarios inside Ω and
 }
 
 TEST_CASE("the baselines run decentralized, from what each robot hears", "[baseline]") {
-  for (const char* k : {"euclidean_lloyd", "geodesic_lloyd"}) {
+  // Every autonomous law but the paper's (the default), whose networked runs are tested with
+  // the network.
+  for (const std::string& k : autonomous_laws()) {
+    if (k == LawConfig{}.type) continue;
     Scenario s = paper("u_shape.json");
     s.coverage.law = law(k, s.environment->diameter() / 50.0);
     s.coverage.network.channel.loss = std::make_shared<const BernoulliLoss>(0.3);

@@ -1,7 +1,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <functional>
 #include <map>
+#include <vector>
 
 #include "core/fingerprint.hpp"
 #include "geometry/uniform_density.hpp"
@@ -218,15 +220,32 @@ TEST_CASE("settling times of a cost series", "[coverage]") {
   CHECK(settling_time(s, 0.01) == 6.0);
   CHECK(settling_time({}, 0.1) == 0.0);
   // The measures of a real run are ordered and within its time.
-  const CoverageOutcome out = run_coverage(paper("u_shape.json"));
+  const Scenario u = paper("u_shape.json");
+  // The path lengths, walked again from the positions every motion step reports.
+  struct Walk final : CoverageObserver {
+    std::vector<Vec2> at;
+    std::vector<double> walked;
+    void on_motion(SimTime, const Robot& r) override {
+      walked[r.id] += distance(at[r.id], r.position);
+      at[r.id] = r.position;
+    }
+  } walk;
+  walk.at = u.robot_positions;
+  walk.walked.assign(u.robot_positions.size(), 0.0);
+  const CoverageOutcome out = run_coverage(u, &walk);
   CHECK(out.time_to_10_percent <= out.time_to_5_percent);
   CHECK(out.time_to_5_percent <= out.time_to_1_percent);
   CHECK(out.time_to_1_percent <= out.sim_time.seconds());
   CHECK(out.time_to_10_percent > 0.0);
   double path = 0.0;
-  for (const auto& r : out.robots)
-    path += r.path_length;
-  CHECK(out.path_length == path);
+  for (std::size_t i = 0; i < out.robots.size(); ++i) {
+    INFO("robot " << i);
+    CHECK(out.robots[i].path_length == Approx(walk.walked[i]).epsilon(1e-12));
+    CHECK(walk.at[i] == out.robots[i].position);
+    path += walk.walked[i];
+  }
+  CHECK(path > 1.0);  // the U's robots start together and spread out
+  CHECK(out.path_length == Approx(path).epsilon(1e-12));
 }
 
 TEST_CASE("the final cost against the run's best", "[coverage]") {
@@ -234,16 +253,29 @@ TEST_CASE("the final cost against the run's best", "[coverage]") {
   CHECK(ratio_to_best(s, 4.5) == 4.5 / 4.0);
   CHECK(ratio_to_best(s, 3.0) == 1.0);  // the end is the best
   CHECK(ratio_to_best({}, 2.0) == 1.0);
-  // A run's: its final cost over the least of its metrics samples and its end.
+  // A run's: its final cost over the least of its metrics samples and its end, each cost
+  // from a partition of the positions computed here.
+  const Scenario u = paper("u_shape.json");
+  const CellIntegrator integrator(*u.environment, *u.density);
+  const auto cost = [&](const std::vector<Vec2>& p) {
+    return VoronoiPartition(integrator, p, VoronoiPartition::Coincident::split).cost();
+  };
   struct Costs final : CoverageObserver {
+    std::function<double(const std::vector<Vec2>&)> cost;
     double least = INFINITY;
     void on_sample(SimTime, const CoverageController& c) override {
-      least = std::min(least, c.real_partition().cost());
+      least = std::min(least, cost(c.positions()));
     }
   } costs;
-  const CoverageOutcome out = run_coverage(paper("u_shape.json"), &costs);
+  costs.cost = cost;
+  const CoverageOutcome out = run_coverage(u, &costs);
+  std::vector<Vec2> final_positions;
+  for (const RobotOutcome& r : out.robots)
+    final_positions.push_back(r.position);
+  const double final_cost = cost(final_positions);
+  CHECK(out.cost_real == Approx(final_cost).epsilon(1e-12));
   CHECK(out.cost_to_best >= 1.0);
-  CHECK(out.cost_to_best == Approx(out.cost_real / std::min(costs.least, out.cost_real)));
+  CHECK(out.cost_to_best == Approx(final_cost / std::min(costs.least, final_cost)));
 }
 
 TEST_CASE("a tolerance as a fraction of the robots' spacing ends the run by it", "[coverage]") {

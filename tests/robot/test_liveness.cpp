@@ -4,12 +4,9 @@
 // report, and for the decentralized start (Algorithm 1 acquires its neighbours first).
 #include <catch2/catch.hpp>
 
-#include <nlohmann/json.hpp>
-
 #include <map>
 #include <set>
 
-#include "analysis/records/final_json.hpp"
 #include "geometry/visibility_graph.hpp"
 #include "net/bernoulli_loss.hpp"
 #include "planners/planner_registry.hpp"
@@ -141,12 +138,8 @@ TEST_CASE("a planner that declares a goal in Ω unreachable stops the run as a p
   CHECK(out.planner_failure->time.seconds() == Approx(0.1));
   CHECK(s.environment->contains(out.planner_failure->goal));
   CHECK(out.sim_time.seconds() == Approx(0.1));
-  const auto j = nlohmann::json::parse(final_json(out));
-  CHECK(j["stop_reason"] == "planner_failure");
-  CHECK(j["planner_failure"]["robot"] == 0);
   // A run without failure says so.
-  CHECK(nlohmann::json::parse(final_json(run_coverage(paper("l_shape.json"))))["planner_failure"]
-            .is_null());
+  CHECK_FALSE(run_coverage(paper("l_shape.json")).planner_failure);
 }
 
 namespace {

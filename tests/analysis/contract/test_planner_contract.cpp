@@ -6,11 +6,13 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <string_view>
 #include <vector>
 
 #include "analysis/contract/planner_contract.hpp"
 #include "geometry/environment.hpp"
+#include "planners/planner_registry.hpp"
 #include "scenarios/obstacle_course.hpp"
 
 using namespace covsim;
@@ -122,18 +124,25 @@ TEST_CASE("contract: the map-based planners", "[contract]") {
   check(s, 200);
 }
 
-TEST_CASE("contract: potential field and straight line stay in Ω and report stalls honestly",
-          "[contract]") {
-  for (const char* name : {"potential_field", "straight_line"}) {
+TEST_CASE(
+    "contract: the planners that promise no completeness stay in Ω and report stalls "
+    "honestly",
+    "[contract]") {
+  // potential_field and straight_line, and any registered like them.
+  std::size_t planners = 0;
+  for (const PlannerEntry& e : planner_registry().entries()) {
+    if (e.contract.complete || contract_refusal(e.name)) continue;
+    ++planners;
     for (double range : {0.0, 0.5, double(INFINITY)}) {
       ContractSetup s;
-      s.planner = name;
+      s.planner = e.name;
       s.range = range;
       s.complete = false;
-      const ContractSummary r = check(s, 150);
-      CHECK(r.projected == 0);  // neither ever claims a goal is unreachable
+      // A `projected` is checked by the harness: only at the projection of a goal outside Ω.
+      check(s, 150);
     }
   }
+  CHECK(planners >= 2);
 }
 
 TEST_CASE("contract: a case is the same on every run, and reruns alone", "[contract]") {
@@ -268,4 +277,89 @@ TEST_CASE("obstacle courses are valid environments, the same for the same seed",
   }
   CHECK_THROWS_AS(obstacle_course(1, ObstacleCourseSpec{1.0, 8.0, 3, 0.1, 0}),
                   std::invalid_argument);
+}
+
+namespace {
+// Registers a planner entry for the life of the guard.
+struct RegisteredPlanner {
+  std::string name;
+  explicit RegisteredPlanner(PlannerEntry e) : name(e.name) {
+    planner_registry().add(std::move(e));
+  }
+  ~RegisteredPlanner() { planner_registry().remove(name); }
+  RegisteredPlanner(const RegisteredPlanner&) = delete;
+  RegisteredPlanner& operator=(const RegisteredPlanner&) = delete;
+};
+
+const ContractSummary* checked(const RegistryContract& r, const std::string& name) {
+  for (const auto& [n, s] : r.checked) {
+    if (n == name) return &s;
+  }
+  return nullptr;
+}
+
+std::string report(const RegistryContract& r) {
+  std::ostringstream out;
+  for (const auto& [name, s] : r.checked) {
+    out << name << ": " << s.cases << " cases, " << s.failures << " failed\n";
+    for (const ContractResult& f : s.failed)
+      out << "  " << f.failure << "\n  rerun: " << f.reproducer << "\n";
+  }
+  for (const auto& [name, why] : r.refused)
+    out << name << ": refused: " << why << "\n";
+  return out.str();
+}
+}  // namespace
+
+TEST_CASE("contract: every registered planner that keeps the robot in Ω is checked as declared",
+          "[contract]") {
+  ContractSetup s;
+  s.range = 0.5;
+  const RegistryContract r = run_registry_contract(s, kSeed, 0, 100, 2);
+  INFO(report(r));
+  CHECK(r.checked.size() + r.refused.size() == planner_registry().entries().size());
+  for (const auto& [name, summary] : r.checked) {
+    INFO(name);
+    CHECK(summary.cases == 100);
+    CHECK(summary.failures == 0);
+    // A planner that claims completeness reaches every reachable goal here.
+    if (planner_registry().at(name).contract.complete) CHECK(summary.reached == summary.reachable);
+  }
+  // `none` drives through walls: refused, with the reason.
+  REQUIRE(r.refused.size() == 1);
+  CHECK(r.refused[0].first == "none");
+  CHECK(r.refused[0].second.find("does not avoid obstacles") != std::string::npos);
+  CHECK(contract_refusal("none").has_value());
+  CHECK_FALSE(contract_refusal("tangent_bug").has_value());
+  CHECK_THROWS_AS(contract_refusal("no_such_planner"), std::invalid_argument);
+}
+
+TEST_CASE("contract: a planner registered before the suite runs gets the contract too",
+          "[contract]") {
+  // A plugin's planner: TangentBug under another name, with TangentBug's promises; and a
+  // liar that claims completeness, which the suite must fail.
+  PlannerEntry again = planner_registry().at("tangent_bug");
+  again.name = "tangent_bug_again";
+  const RegisteredPlanner a(std::move(again));
+  PlannerEntry liar;
+  liar.name = "registered_liar";
+  liar.description = "claims arrival at its start";
+  liar.contract.complete = true;
+  liar.make = [](const PlannerContext&, const Params&) -> PlannerSource {
+    return [] { return std::make_unique<Liar>(Liar::reached_at_start); };
+  };
+  const RegisteredPlanner b(std::move(liar));
+  const RegistryContract r = run_registry_contract(ContractSetup{}, kSeed, 0, 30, 2);
+  INFO(report(r));
+  const ContractSummary* bug = checked(r, "tangent_bug_again");
+  REQUIRE(bug != nullptr);
+  CHECK(bug->cases == 30);
+  CHECK(bug->failures == 0);
+  // The same cases as TangentBug's own, to the step.
+  const ContractSummary* original = checked(r, "tangent_bug");
+  REQUIRE(original != nullptr);
+  CHECK(bug->worst_ratio == original->worst_ratio);
+  const ContractSummary* lies = checked(r, "registered_liar");
+  REQUIRE(lies != nullptr);
+  CHECK(lies->failures == 30);
 }
