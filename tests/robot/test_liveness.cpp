@@ -14,8 +14,10 @@
 #include "planners/tangent_bug.hpp"
 #include "scenarios/scenario_override.hpp"
 #include "tests/robot/paper_scenarios.hpp"
+#include "tests/sim/gives_up_planner.hpp"
 
 using namespace covsim;
+using covsim::test::GivesUp;
 using covsim::test::paper;
 
 TEST_CASE("TangentBug reaches office goals round the box and T-walls it used to give up on",
@@ -113,18 +115,6 @@ TEST_CASE("the controller hands a planner a goal again only when the target has 
   }
   CHECK(moved_goals > 0);  // periodic loop 1 moves goals under robots on their way
 }
-
-namespace {
-// Declares every goal unreachable at once: a broken promise.
-class GivesUp final : public Planner {
- public:
-  std::string_view name() const override { return "gives_up"; }
-  void set_goal(Vec2) override {}
-  PlanStep step(const SensorReading& r, double) override {
-    return {r.position, PlanStatus::projected};
-  }
-};
-}  // namespace
 
 TEST_CASE("a planner that declares a goal in Ω unreachable stops the run as a planner failure",
           "[liveness]") {

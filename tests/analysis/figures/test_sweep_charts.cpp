@@ -9,24 +9,12 @@
 
 #include "analysis/figures/sweep_charts.hpp"
 #include "analysis/sweep/sweep_runner.hpp"
+#include "tests/analysis/sweep/sweep_files.hpp"
 
 using namespace covsim;
 namespace fs = std::filesystem;
-
-namespace {
-fs::path temp_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("covsim-charts-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-fs::path write_sweep(const fs::path& dir, const std::string& body) {
-  std::ofstream(dir / "sweep.json") << body;
-  return dir / "sweep.json";
-}
-}  // namespace
+using covsim::test::temp_dir;
+using covsim::test::write_sweep;
 
 TEST_CASE("plots group their lines by a chosen parameter", "[sweep]") {
   const fs::path dir = temp_dir("group");

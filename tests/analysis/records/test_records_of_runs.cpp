@@ -10,21 +10,11 @@
 #include "analysis/records/result_fields.hpp"
 #include "sim/metrics_sampler.hpp"
 #include "tests/robot/paper_scenarios.hpp"
+#include "tests/sim/gives_up_planner.hpp"
 
 using namespace covsim;
+using covsim::test::GivesUp;
 using covsim::test::paper;
-
-namespace {
-// Declares every goal unreachable at once: a broken promise.
-class GivesUp final : public Planner {
- public:
-  std::string_view name() const override { return "gives_up"; }
-  void set_goal(Vec2) override {}
-  PlanStep step(const SensorReading& r, double) override {
-    return {r.position, PlanStatus::projected};
-  }
-};
-}  // namespace
 
 TEST_CASE("final.json names a planner failure, and null when there was none", "[records]") {
   const CoverageOutcome out =

@@ -15,24 +15,14 @@
 #include "analysis/sweep/statistics.hpp"
 #include "analysis/sweep/sweep_runner.hpp"
 #include "scenarios/scenario_error.hpp"
+#include "tests/analysis/sweep/sweep_files.hpp"
 
 using namespace covsim;
 namespace fs = std::filesystem;
+using covsim::test::temp_dir;
+using covsim::test::write_sweep;
 
 namespace {
-fs::path temp_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("covsim-sweep-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-fs::path write_sweep(const fs::path& dir, const std::string& body) {
-  std::ofstream(dir / "sweep.json") << body;
-  return dir / "sweep.json";
-}
-
 const std::string kSweep =
     R"({"scenario": ")" + std::string(COVSIM_SOURCE_DIR) + R"(/scenarios/two_obstacles.json",
   "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.0, 0.4]},
