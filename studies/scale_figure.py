@@ -6,7 +6,7 @@ BM_ScaleRun, BM_ScaleRunDecentralized and BM_DelaunayPerTick at N = 100, 1000 an
 repetitions, measured in one run of covsim_bench), drawn on log-log axes, with the exponent
 of each series between consecutive sizes.
 
-Usage: python3 studies/scale_figure.py [--repetitions N] [--bench-csv FILE]
+Usage: studies/scale_figure.py [--repetitions N] [--bench-csv FILE]
 (default 3 repetitions; N = 10 000 takes minutes). The benchmark's CSV goes to
 out/scale-figure/bench.csv; --bench-csv draws and tabulates an earlier one instead of
 running the benchmarks.
