@@ -3,7 +3,6 @@
 // --out the same folder it redraws the plots (--format, --group) from the runs kept there.
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,12 +36,8 @@ void add_merge_command(CLI::App& app) {
     std::vector<SweepResult> results;
     try {
       // --group is checked before anything is written.
-      if (!opts->group.empty() && !dirs.empty()) {
-        const SweepSpec first = sweep_from_json(read_sweep_folder(dirs.front()).sweep);
-        if (std::find(first.parameters.begin(), first.parameters.end(), opts->group) ==
-            first.parameters.end())
-          throw std::invalid_argument("--group: \"" + opts->group + "\" is not a swept parameter");
-      }
+      if (!dirs.empty())
+        check_chart_group(sweep_from_json(read_sweep_folder(dirs.front()).sweep), opts->group);
       results = merge_sweeps(dirs, opts->out, spec);
     } catch (const std::exception& e) {  // runtime_error, or invalid_argument for --group
       throw InputError(e.what());

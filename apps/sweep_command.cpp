@@ -52,10 +52,10 @@ void add_sweep_command(CLI::App& app) {
           fmt::format("--shard: expected K/N with 0 <= K < N, found \"{}\"", opts->shard));
     }
     const SweepSpec spec = load_sweep(opts->sweep);
-    if (!opts->group.empty() && std::find(spec.parameters.begin(), spec.parameters.end(),
-                                          opts->group) == spec.parameters.end()) {
-      throw InputError(
-          fmt::format("--group: \"{}\" is not a swept parameter of {}", opts->group, opts->sweep));
+    try {
+      check_chart_group(spec, opts->group);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("{} of {}", e.what(), opts->sweep));
     }
     const std::filesystem::path dir = opts->out;
     const std::vector<SweepResult> results =

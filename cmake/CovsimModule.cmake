@@ -24,6 +24,8 @@ endfunction()
 # units all include (nlohmann/json through scenarios/scenario.hpp, CLI11, Catch2, pybind11),
 # parsed once per target instead of once per file. Off with -DCOVSIM_PCH=OFF. ccache caches
 # such compilations with the sloppiness scripts/build sets.
+# What every module from scenarios/ up includes through scenarios/scenario.hpp.
+set(COVSIM_JSON_HEADERS <nlohmann/json.hpp> <fmt/format.h>)
 function(covsim_precompile target)
   if(NOT COVSIM_PCH)
     return()

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -26,14 +27,18 @@ std::string run_field_unit(const std::string& name) {
 }
 }  // namespace
 
+void check_chart_group(const SweepSpec& spec, const std::string& group) {
+  if (!group.empty() &&
+      std::find(spec.parameters.begin(), spec.parameters.end(), group) == spec.parameters.end())
+    throw std::invalid_argument("--group: \"" + group + "\" is not a swept parameter");
+}
+
 std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<SweepResult>& results,
                                      const std::string& group) {
+  check_chart_group(spec, group);
   std::optional<std::size_t> group_index;
   for (std::size_t q = 0; q < spec.parameters.size(); ++q) {
     if (spec.parameters[q] == group) group_index = q;
-  }
-  if (!group.empty() && !group_index) {
-    throw std::invalid_argument("--group: \"" + group + "\" is not a swept parameter");
   }
   std::vector<SweepChart> charts;
   const std::vector<SweepRun> runs = spec.runs();

@@ -18,6 +18,9 @@ struct SweepChart {
   std::string name;
   LineChart chart;
 };
+// Throws std::invalid_argument ("--group: ... is not a swept parameter") unless `group` is
+// empty or a swept parameter of `spec`.
+void check_chart_group(const SweepSpec& spec, const std::string& group);
 // Throws std::invalid_argument for a group that is not swept.
 std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<SweepResult>& results,
                                      const std::string& group = "");

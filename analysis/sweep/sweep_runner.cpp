@@ -159,15 +159,15 @@ std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const f
   if (dirs.empty()) throw std::runtime_error("nothing to merge");
   // One sweep in every folder; builds that differ are named.
   const SweepFolderRecord first = read_sweep_folder(dirs.front());
-  for (const fs::path& d : dirs) {
-    const SweepFolderRecord held = read_sweep_folder(d);
+  for (auto d = dirs.begin() + 1; d != dirs.end(); ++d) {
+    const SweepFolderRecord held = read_sweep_folder(*d);
     if (held.sweep != first.sweep)
-      throw std::runtime_error(d.string() + " holds a different sweep from " +
+      throw std::runtime_error(d->string() + " holds a different sweep from " +
                                dirs.front().string());
     const std::vector<std::string> diffs = build_differences(first.provenance, held.provenance);
     if (diffs.empty()) continue;
     fmt::print(stderr, "covsim: warning: {} and {} were run by different builds:\n",
-               dirs.front().string(), d.string());
+               dirs.front().string(), d->string());
     for (const std::string& line : diffs)
       fmt::print(stderr, "  {}\n", line);
   }
