@@ -11,6 +11,9 @@ function(covsim_add_module name)
     $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/generated>
     $<INSTALL_INTERFACE:include/covsim>)
   target_link_libraries(covsim_${name} PUBLIC covsim::flags ${ARG_DEPS})
+  if(COVSIM_FUZZ)  # coverage feedback from the modules' code for libFuzzer (not the tests')
+    target_compile_options(covsim_${name} PRIVATE -fsanitize=fuzzer-no-link)
+  endif()
   set_target_properties(covsim_${name} PROPERTIES EXPORT_NAME ${name}
                                                   POSITION_INDEPENDENT_CODE ON)
   add_library(covsim::${name} ALIAS covsim_${name})

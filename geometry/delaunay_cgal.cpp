@@ -14,9 +14,9 @@ namespace covsim {
 
 namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-using Dt = CGAL::Delaunay_triangulation_2<K, Tds>;
+using DelaunayVb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
+using DelaunayTds = CGAL::Triangulation_data_structure_2<DelaunayVb>;
+using Dt = CGAL::Delaunay_triangulation_2<K, DelaunayTds>;
 }  // namespace
 
 DelaunayNeighbors delaunay_neighbors(const std::vector<Vec2>& generators) {

@@ -108,6 +108,14 @@ Vec2 uniform_point(const Environment& env, RandomStream& rng) {
   return AreaSampler(env).draw(rng);
 }
 
+Vec2 uniform_point_by_rejection(const Environment& env, RandomStream& rng) {
+  const Box& b = env.bounds();
+  for (;;) {
+    const Vec2 p{rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
+    if (env.contains(p)) return p;
+  }
+}
+
 std::vector<Vec2> place_points(const Environment& env, const Placement& placement,
                                std::size_t count, double separation, RandomStream& rng,
                                const std::vector<Vec2>& taken) {

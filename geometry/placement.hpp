@@ -34,5 +34,8 @@ std::vector<Vec2> place_points(const Environment& env, const Placement& placemen
 
 // A point of Ω drawn uniformly (over the free-space triangles, by area).
 Vec2 uniform_point(const Environment& env, RandomStream& rng);
+// A point of Ω drawn uniformly by rejection from Ω's bounding box: two draws per try, so the
+// sequence differs from uniform_point's (the contract suites' cases are drawn this way).
+Vec2 uniform_point_by_rejection(const Environment& env, RandomStream& rng);
 
 }  // namespace covsim

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/random_stream.hpp"
+#include "geometry/placement.hpp"
 #include "geometry/uniform_density.hpp"
 #include "geometry/voronoi_partition.hpp"
 #include "robot/coverage_law_registry.hpp"
@@ -63,14 +64,6 @@ Environment make_environment(std::uint64_t seed, std::uint64_t index, bool conve
   spec.notches = static_cast<std::uint32_t>(rng.below(3));
   const ObstacleCourse c = obstacle_course(rng.next_u64(), spec);
   return Environment(c.outer, c.holes);
-}
-
-Vec2 point_inside(const Environment& env, RandomStream& rng) {
-  const Box& b = env.bounds();
-  for (;;) {
-    const Vec2 p{rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
-    if (env.contains(p)) return p;
-  }
 }
 
 double segment_distance(Vec2 x, Vec2 a, Vec2 b) {
@@ -131,7 +124,7 @@ void run_case(Case& c) {
       const Box& b = env.bounds();
       p = {rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
     } else {
-      p = point_inside(env, rng);
+      p = uniform_point_by_rejection(env, rng);
     }
   }
   res.robots = g.size();

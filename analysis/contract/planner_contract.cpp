@@ -12,6 +12,7 @@
 
 #include "core/random_stream.hpp"
 #include "geometry/environment.hpp"
+#include "geometry/placement.hpp"
 #include "geometry/visibility_graph.hpp"
 #include "planners/planner_registry.hpp"
 #include "planners/tangent_bug.hpp"
@@ -90,14 +91,6 @@ std::optional<Vec2> point_outside(const Environment& env, RandomStream& rng) {
   return std::nullopt;
 }
 
-Vec2 point_inside(const Environment& env, RandomStream& rng) {
-  const Box& b = env.bounds();
-  for (;;) {
-    const Vec2 p{rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
-    if (env.contains(p)) return p;
-  }
-}
-
 ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std::uint64_t seed,
                         std::uint64_t index, bool record = false) {
   const Environment& env = *map.env;
@@ -117,14 +110,14 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
     res.start = in_box(map.below);
   } else {
     res.start = rng.bernoulli(0.15) ? point_on_boundary(env, map.boundary_length, rng)
-                                    : point_inside(env, rng);
+                                    : uniform_point_by_rejection(env, rng);
   }
   if (setup.family == CaseFamily::combs) {
     res.goal = in_box(map.above);
   } else if (kind < 0.55) {
-    res.goal = point_inside(env, rng);
+    res.goal = uniform_point_by_rejection(env, rng);
   } else if (kind < 0.8) {
-    res.goal = point_outside(env, rng).value_or(point_inside(env, rng));
+    res.goal = point_outside(env, rng).value_or(uniform_point_by_rejection(env, rng));
   } else if (kind < 0.9) {
     res.goal = point_on_boundary(env, map.boundary_length, rng);
   } else {

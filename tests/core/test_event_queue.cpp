@@ -7,14 +7,10 @@
 
 #include "core/event_queue.hpp"
 #include "core/random_stream.hpp"
+#include "tests/core/sim_time_ns.hpp"
 
 using namespace covsim;
-
-namespace {
-SimTime ns(std::int64_t v) {
-  return SimTime::from_ns(v);
-}
-}  // namespace
+using covsim::test::ns;
 
 TEST_CASE("events pop in (time, priority, entity, sequence) order", "[event_queue]") {
   EventQueue q;

@@ -5,13 +5,12 @@
 #include <vector>
 
 #include "core/kernel.hpp"
+#include "tests/core/sim_time_ns.hpp"
 
 using namespace covsim;
+using covsim::test::ns;
 
 namespace {
-SimTime ns(std::int64_t v) {
-  return SimTime::from_ns(v);
-}
 
 struct Log {
   std::vector<std::string> entries;

@@ -27,7 +27,7 @@ struct World {
   Kernel kernel{42};
 };
 
-NetworkConfig ranged(double range) {
+NetworkConfig network_with_range(double range) {
   NetworkConfig c;
   c.channel.range = range;
   return c;
@@ -36,7 +36,7 @@ NetworkConfig ranged(double range) {
 
 TEST_CASE("a networked robot knows only what was delivered to it", "[view]") {
   World w;
-  NetworkedView view(w.kernel, w.square, ranged(1.0), w.state);
+  NetworkedView view(w.kernel, w.square, network_with_range(1.0), w.state);
   CHECK(view.decentralized());
   // Before any message: itself alone, at its place in id order.
   for (std::uint32_t i = 0; i < 3; ++i) {
@@ -81,7 +81,7 @@ TEST_CASE("a networked robot knows only what was delivered to it", "[view]") {
 
 TEST_CASE("a delayed message is known when it is delivered", "[view]") {
   World w;
-  NetworkConfig c = ranged(1.0);
+  NetworkConfig c = network_with_range(1.0);
   c.channel.delay = std::make_shared<const ConstantDelay>(0.03);
   NetworkedView view(w.kernel, w.square, c, w.state);
   view.start(SimTime::zero());
@@ -93,7 +93,7 @@ TEST_CASE("a delayed message is known when it is delivered", "[view]") {
 
 TEST_CASE("entries older than the staleness limit are dropped at the robot's refresh", "[view]") {
   World w;
-  NetworkConfig c = ranged(1.0);
+  NetworkConfig c = network_with_range(1.0);
   c.staleness = at(0.25);
   NetworkedView view(w.kernel, w.square, c, w.state);
   view.start(SimTime::zero());
@@ -111,7 +111,7 @@ TEST_CASE("entries older than the staleness limit are dropped at the robot's ref
   CHECK(view.knowledge(0, Generators::positions).points.size() == 1);
   // Without a limit nothing goes stale.
   World v;
-  NetworkedView forever(v.kernel, v.square, ranged(1.0), v.state);
+  NetworkedView forever(v.kernel, v.square, network_with_range(1.0), v.state);
   forever.start(SimTime::zero());
   v.kernel.run_until(at(0.3));
   v.state.move(Generators::positions, 1, {2.5, 0.5});
@@ -123,7 +123,7 @@ TEST_CASE("entries older than the staleness limit are dropped at the robot's ref
 
 TEST_CASE("a robot acquires its neighbours first, or goes alone after the timeout", "[view]") {
   World w;
-  NetworkConfig c = ranged(1.0);
+  NetworkConfig c = network_with_range(1.0);
   c.acquire = at(0.2);
   c.acquire_timeout = at(0.7);
   NetworkedView view(w.kernel, w.square, c, w.state);
@@ -142,7 +142,7 @@ TEST_CASE("a robot acquires its neighbours first, or goes alone after the timeou
   CHECK(view.knowledge(2, Generators::positions).points.size() == 1);
   // A robot that hears somebody after the acquisition time is ready from then on.
   World late;
-  NetworkConfig d = ranged(1.0);
+  NetworkConfig d = network_with_range(1.0);
   d.acquire = at(0.2);
   d.acquire_timeout = at(5.0);
   late.state.move(Generators::positions, 1, {3.0, 0.5});  // out of robot 0's range

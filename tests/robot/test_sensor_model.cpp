@@ -18,7 +18,7 @@ Environment room_with_box() {
                      {{{0.75, 0.75}, {0.75, 1.25}, {1.25, 1.25}, {1.25, 0.75}}});
 }
 
-SensorConfig ranged(double range) {
+SensorConfig sensor_with_range(double range) {
   SensorConfig c;
   c.range = range;
   return c;
@@ -48,7 +48,7 @@ TEST_CASE("an exact sensor reads the room afresh at each step, as its range allo
   const Vec2 p{0.25, 0.25};
 
   SECTION("range 0: contact only") {
-    SensorModel model(kernel, env, ranged(0.0), 1, pos.callback());
+    SensorModel model(kernel, env, sensor_with_range(0.0), 1, pos.callback());
     const SensorReading r = model.reading(0, p);
     CHECK(r.position == p);
     CHECK(r.origin == p);
@@ -64,7 +64,7 @@ TEST_CASE("an exact sensor reads the room afresh at each step, as its range allo
   }
 
   SECTION("a finite range: only walls within it") {
-    SensorModel model(kernel, env, ranged(0.5), 1, pos.callback());
+    SensorModel model(kernel, env, sensor_with_range(0.5), 1, pos.callback());
     const SensorReading r = model.reading(0, p);
     CHECK(r.range == 0.5);
     REQUIRE_FALSE(r.visible.pieces.empty());

@@ -3,14 +3,10 @@
 #include "net/bernoulli_loss.hpp"
 #include "scenarios/scenario.hpp"
 #include "sim/simulation.hpp"
+#include "tests/robot/paper_scenarios.hpp"
 
 using namespace covsim;
-
-namespace {
-Scenario paper(const std::string& name) {
-  return load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/" + name);
-}
-}  // namespace
+using covsim::test::paper;
 
 TEST_CASE("a run stepped event by event, or in chunks, equals the whole run", "[simulation]") {
   Scenario lossy = paper("two_obstacles.json");

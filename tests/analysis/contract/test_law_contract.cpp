@@ -12,7 +12,7 @@
 using namespace covsim;
 
 namespace {
-constexpr std::uint64_t kSeed = 20261121;
+constexpr std::uint64_t kLawSeed = 20261121;
 
 std::string report(const LawContractSummary& s) {
   std::ostringstream out;
@@ -73,7 +73,7 @@ const LawContractSummary& find(const std::vector<LawContractSummary>& all, const
 }  // namespace
 
 TEST_CASE("law contract: every registered law keeps its promises", "[contract][law]") {
-  const std::vector<LawContractSummary> all = run_registry_law_contract(kSeed, 0, 30);
+  const std::vector<LawContractSummary> all = run_registry_law_contract(kLawSeed, 0, 30);
   REQUIRE(all.size() == coverage_law_registry().entries().size());
   for (const LawContractSummary& s : all) {
     INFO(report(s));
@@ -94,8 +94,8 @@ TEST_CASE("law contract: every registered law keeps its promises", "[contract][l
 }
 
 TEST_CASE("law contract: a case is the same on every run", "[contract][law]") {
-  const LawContractResult a = law_contract_case("geodesic_lloyd", kSeed, 7);
-  const LawContractResult b = law_contract_case("geodesic_lloyd", kSeed, 7);
+  const LawContractResult a = law_contract_case("geodesic_lloyd", kLawSeed, 7);
+  const LawContractResult b = law_contract_case("geodesic_lloyd", kLawSeed, 7);
   CHECK(a.robots == b.robots);
   CHECK(a.robots >= 2);
   CHECK_FALSE(a.convex);  // odd cases are obstacle courses
@@ -112,7 +112,7 @@ TEST_CASE("law contract: a law registered before the suite runs is checked too",
   };
   const Registered damped(
       "half_lloyd", [](Vec2 p, Vec2 c) { return p + 0.5 * (c - p); }, half);
-  const std::vector<LawContractSummary> all = run_registry_law_contract(kSeed, 0, 20);
+  const std::vector<LawContractSummary> all = run_registry_law_contract(kLawSeed, 0, 20);
   const LawContractSummary& s = find(all, "half_lloyd");
   INFO(report(s));
   CHECK(s.cases == 20);
@@ -142,15 +142,15 @@ TEST_CASE("law contract: the harness catches laws that break their promises", "[
       },
       LawContract{});
   for (const char* name : {"still", "overshoot", "nan"}) {
-    const LawContractSummary s = run_law_contract(name, kSeed, 0, 10);
+    const LawContractSummary s = run_law_contract(name, kLawSeed, 0, 10);
     INFO(report(s));
     CHECK(s.failures > 0);
     REQUIRE_FALSE(s.failed.empty());
     CHECK(s.failed.front().reproducer.find(name) != std::string::npos);
   }
   // Convex cases only for the overshoot: it promises nothing in an obstacle course.
-  const LawContractSummary o = run_law_contract("overshoot", kSeed, 0, 10);
+  const LawContractSummary o = run_law_contract("overshoot", kLawSeed, 0, 10);
   for (const LawContractResult& r : o.failed)
     CHECK(r.convex);
-  CHECK(run_law_contract("nan", kSeed, 0, 10).failures == 10);
+  CHECK(run_law_contract("nan", kLawSeed, 0, 10).failures == 10);
 }

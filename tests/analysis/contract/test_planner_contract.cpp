@@ -18,10 +18,10 @@
 using namespace covsim;
 
 namespace {
-constexpr std::uint64_t kSeed = 20261121;
+constexpr std::uint64_t kPlannerSeed = 20261121;
 
 ContractSummary check(const ContractSetup& setup, std::uint64_t cases) {
-  const ContractSummary s = run_contract(setup, kSeed, 0, cases, 1);
+  const ContractSummary s = run_contract(setup, kPlannerSeed, 0, cases, 1);
   std::ostringstream report;
   report << setup.label() << ": " << s.cases << " cases, " << s.reached << " reached, "
          << s.projected << " projected, " << s.stalled << " stalled, worst path/L* "
@@ -92,7 +92,7 @@ TEST_CASE("contract: the longer the range, the shorter the path", "[contract]") 
   // does not increase from R = 0 to 0.5, 2 and infinity; on combs a range sensor cuts round
   // the teeth a contact sensor walks into (docs/planner-contract.md has the curves).
   const std::vector<double> ranges{0.0, 0.5, 2.0, double(INFINITY)};
-  const RangeCurve courses = range_curve(bug(0.0), ranges, kSeed, 0, 400, 2);
+  const RangeCurve courses = range_curve(bug(0.0), ranges, kPlannerSeed, 0, 400, 2);
   REQUIRE(courses.points.size() == 4);
   CHECK(courses.cases >= 150);
   for (std::size_t k = 0; k < ranges.size(); ++k) {
@@ -102,7 +102,7 @@ TEST_CASE("contract: the longer the range, the shorter the path", "[contract]") 
   }
   ContractSetup comb = bug(0.0);
   comb.family = CaseFamily::combs;
-  const RangeCurve combs = range_curve(comb, ranges, kSeed, 0, 60, 2);
+  const RangeCurve combs = range_curve(comb, ranges, kPlannerSeed, 0, 60, 2);
   CHECK(combs.cases == 60);
   std::ostringstream curve;
   for (const RangePoint& p : combs.points)
@@ -147,9 +147,9 @@ TEST_CASE(
 
 TEST_CASE("contract: a case is the same on every run, and reruns alone", "[contract]") {
   const ContractSetup s = bug(0.5);
-  const ContractSummary all = run_contract(s, kSeed, 0, 30, 2);
-  const ContractResult one = run_contract_case(s, kSeed, 17);
-  const ContractResult again = run_contract_case(s, kSeed, 17);
+  const ContractSummary all = run_contract(s, kPlannerSeed, 0, 30, 2);
+  const ContractResult one = run_contract_case(s, kPlannerSeed, 17);
+  const ContractResult again = run_contract_case(s, kPlannerSeed, 17);
   CHECK(one.length == again.length);
   CHECK(one.end == again.end);
   CHECK(all.cases == 30);
@@ -248,7 +248,7 @@ ContractSummary run_liar(Liar::Lie lie, bool complete) {
   s.planner = "liar";
   s.complete = complete;
   s.make = [lie](const Environment&, const SensorSpec&) { return std::make_unique<Liar>(lie); };
-  return run_contract(s, kSeed, 0, 20, 1);
+  return run_contract(s, kPlannerSeed, 0, 20, 1);
 }
 }  // namespace
 
@@ -264,7 +264,7 @@ TEST_CASE("contract: the harness catches planners that break the contract", "[co
   ContractSetup line;
   line.planner = "straight_line";
   line.complete = true;
-  CHECK(run_contract(line, kSeed, 0, 20, 1).failures > 0);
+  CHECK(run_contract(line, kPlannerSeed, 0, 20, 1).failures > 0);
 }
 
 TEST_CASE("obstacle courses are valid environments, the same for the same seed", "[contract]") {
@@ -315,7 +315,7 @@ TEST_CASE("contract: every registered planner that keeps the robot in Ω is chec
           "[contract]") {
   ContractSetup s;
   s.range = 0.5;
-  const RegistryContract r = run_registry_contract(s, kSeed, 0, 100, 2);
+  const RegistryContract r = run_registry_contract(s, kPlannerSeed, 0, 100, 2);
   INFO(report(r));
   CHECK(r.checked.size() + r.refused.size() == planner_registry().entries().size());
   for (const auto& [name, summary] : r.checked) {
@@ -349,7 +349,7 @@ TEST_CASE("contract: a planner registered before the suite runs gets the contrac
     return [] { return std::make_unique<Liar>(Liar::reached_at_start); };
   };
   const RegisteredPlanner b(std::move(liar));
-  const RegistryContract r = run_registry_contract(ContractSetup{}, kSeed, 0, 30, 2);
+  const RegistryContract r = run_registry_contract(ContractSetup{}, kPlannerSeed, 0, 30, 2);
   INFO(report(r));
   const ContractSummary* bug = checked(r, "tangent_bug_again");
   REQUIRE(bug != nullptr);

@@ -5,28 +5,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <regex>
 #include <set>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "analysis/records/final_json.hpp"
 #include "analysis/records/result_fields.hpp"
 #include "analysis/records/run_recorder.hpp"
+#include "tests/doc_text.hpp"
 
 using namespace covsim;
 using ojson = nlohmann::ordered_json;
 
 namespace {
-std::string doc(const std::string& name) {
-  std::ifstream in(std::string(COVSIM_SOURCE_DIR) + "/docs/" + name);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 template <class R>
 std::vector<std::string> names(const FieldTable<R>& t) {
   std::vector<std::string> out;
@@ -218,7 +209,7 @@ TEST_CASE("robots and metrics samples: every field described, timed ones with un
 }
 
 TEST_CASE("docs/outputs.md lists final.json's fields in the table's order", "[fields]") {
-  const std::string text = doc("outputs.md");
+  const std::string text = test::doc_text("outputs.md");
   const auto at = text.find("```json\n", text.find("## final.json"));
   REQUIRE(at != std::string::npos);
   const auto end = text.find("```", at + 8);
@@ -232,7 +223,7 @@ TEST_CASE("docs/outputs.md lists final.json's fields in the table's order", "[fi
 }
 
 TEST_CASE("docs/outputs.md's table of measures is the table's", "[fields]") {
-  const std::string text = doc("outputs.md");
+  const std::string text = test::doc_text("outputs.md");
   INFO("docs/outputs.md should hold:\n" << measures_table());
   const auto at = text.find("| measure | unit |");
   REQUIRE(at != std::string::npos);
@@ -241,10 +232,11 @@ TEST_CASE("docs/outputs.md's table of measures is the table's", "[fields]") {
 }
 
 TEST_CASE("docs/outputs.md gives trajectory.csv's and metrics.csv's headers", "[fields]") {
-  const std::string text = doc("outputs.md");
-  std::smatch m;
-  REQUIRE(std::regex_search(text, m, std::regex("Header `(t,robot[^`]*)`")));
-  CHECK(m[1].str() == trajectory_header());
-  REQUIRE(std::regex_search(text, m, std::regex("Header `(t,cost_real[^`]*)`")));
-  CHECK(m[1].str() == csv_header(metrics_fields()));
+  const std::string text = test::doc_text("outputs.md");
+  const auto trajectory = test::code_span_starting(text, "t,robot");
+  REQUIRE(trajectory);
+  CHECK(*trajectory == trajectory_header());
+  const auto metrics = test::code_span_starting(text, "t,cost_real");
+  REQUIRE(metrics);
+  CHECK(*metrics == csv_header(metrics_fields()));
 }

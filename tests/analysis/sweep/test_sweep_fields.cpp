@@ -7,12 +7,12 @@
 
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include "analysis/records/result_fields.hpp"
 #include "analysis/sweep/sweep_runner.hpp"
 #include "analysis/sweep/sweep_tables.hpp"
+#include "tests/doc_text.hpp"
 
 using namespace covsim;
 namespace fs = std::filesystem;
@@ -99,10 +99,14 @@ TEST_CASE("a sweep's files have a column for every measure it records", "[fields
 TEST_CASE("docs/sweeps.md lists runs.csv's columns and summary.csv's metrics from the table",
           "[fields]") {
   const std::string text = read_text(fs::path(COVSIM_SOURCE_DIR) / "docs" / "sweeps.md");
-  std::smatch m;
-  REQUIRE(std::regex_search(text, m,
-                            std::regex("`run,setting,<parameters\\.\\.\\.>,seed,([^`]*),error`")));
-  CHECK(split(m[1].str(), ",") == measure_columns());
-  REQUIRE(std::regex_search(text, m, std::regex("then for each of\\s*`([^`]*)`:")));
-  CHECK(split(m[1].str(), ", ") == summarized_columns());
+  const std::string head = "run,setting,<parameters...>,seed,", tail = ",error";
+  const auto columns = test::code_span_starting(text, head);
+  REQUIRE(columns);
+  REQUIRE(columns->size() > head.size() + tail.size());
+  REQUIRE(columns->ends_with(tail));
+  CHECK(split(columns->substr(head.size(), columns->size() - head.size() - tail.size()), ",") ==
+        measure_columns());
+  const auto summarized = test::code_span_after(text, "then for each of");
+  REQUIRE(summarized);
+  CHECK(split(*summarized, ", ") == summarized_columns());
 }
