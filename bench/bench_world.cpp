@@ -39,4 +39,20 @@ std::vector<Vec2> random_points_in(const Environment& env, std::size_t n, std::u
   return pts;
 }
 
+const Environment& peer_environment() {
+  static const Environment env({{0, 0}, {1024, 0}, {1024, 1024}, {0, 1024}}, {});
+  return env;
+}
+
+std::vector<GaussianComponent> peer_bumps() {
+  RandomStream rng(1, 0, "peer-world");
+  std::vector<GaussianComponent> bumps;
+  for (int k = 0; k < 32; ++k) {
+    const Vec2 mean{rng.uniform(0, 1024), rng.uniform(0, 1024)};
+    const double sigma = rng.uniform(40, 50), peak = rng.uniform(6, 10);
+    bumps.push_back({mean, sigma, peak});
+  }
+  return bumps;
+}
+
 }  // namespace covsim::bench

@@ -6,58 +6,21 @@
 #include <string>
 
 #include "core/random_stream.hpp"
+#include "geometry/gaussian_moments.hpp"
 #include "geometry/placement.hpp"
-#include "geometry/quadrature.hpp"
 
 namespace covsim {
 
 namespace {
-constexpr int kMixturePoints = 8;  // exact to degree 14 on each triangle
+// A bump whose whole mass over a piece stays below this fraction of what the piece is already
+// known to hold cannot change its moments in double precision: it is left out.
+constexpr double kNegligible = 1e-17;
 
-// Beyond this many standard deviations a bump is below 1e-31 of its height: left to the
-// quadrature of the floor.
-constexpr double kReach = 12.0;
-
-double distance_to_triangle(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
-  const double d1 = cross(b - a, p - a), d2 = cross(c - b, p - b), d3 = cross(a - c, p - c);
-  if ((d1 >= 0 && d2 >= 0 && d3 >= 0) || (d1 <= 0 && d2 <= 0 && d3 <= 0)) return 0.0;
-  const auto seg = [&](Vec2 u, Vec2 v) {
-    const Vec2 e = v - u;
-    const double t = std::clamp(dot(p - u, e) / std::max(norm2(e), 1e-300), 0.0, 1.0);
-    return distance(p, u + t * e);
-  };
-  return std::min({seg(a, b), seg(b, c), seg(c, a)});
-}
-
-// Calls f on triangles covering the triangle (a, b, c), halving its longest edge while it is
-// longer than the σ of a bump within reach of it: the cost follows the bumps, not the ratio
-// of Ω to σ.
-template <class F>
-void subdivide(Vec2 a, Vec2 b, Vec2 c, const std::vector<GaussianComponent>& bumps, const F& f,
-               int depth = 0) {
-  const double ab = norm2(b - a), bc = norm2(c - b), ca = norm2(a - c);
-  const double longest = std::max({ab, bc, ca});
-  double max_width = INFINITY;
-  for (const GaussianComponent& g : bumps)
-    if (g.sigma < max_width && distance_to_triangle(g.mean, a, b, c) < kReach * g.sigma)
-      max_width = g.sigma;
-  if (longest <= max_width * max_width || depth > 40) {
-    f(a, b, c);
-    return;
-  }
-  if (longest == ab) {
-    const Vec2 m = 0.5 * (a + b);
-    subdivide(a, m, c, bumps, f, depth + 1);
-    subdivide(m, b, c, bumps, f, depth + 1);
-  } else if (longest == bc) {
-    const Vec2 m = 0.5 * (b + c);
-    subdivide(a, b, m, bumps, f, depth + 1);
-    subdivide(a, m, c, bumps, f, depth + 1);
-  } else {
-    const Vec2 m = 0.5 * (c + a);
-    subdivide(a, b, m, bumps, f, depth + 1);
-    subdivide(m, b, c, bumps, f, depth + 1);
-  }
+// Squared distance from p to the box (0 inside).
+double distance2(Vec2 p, const Box& b) {
+  const double dx = std::max({b.lo.x - p.x, 0.0, p.x - b.hi.x});
+  const double dy = std::max({b.lo.y - p.y, 0.0, p.y - b.hi.y});
+  return dx * dx + dy * dy;
 }
 }  // namespace
 
@@ -87,13 +50,38 @@ double GaussianMixtureDensity::operator()(Vec2 x) const {
 }
 
 Moments GaussianMixtureDensity::integrate(const ConvexPolygon& piece, Vec2 r) const {
-  Moments out;
-  if (piece.size() < 3) return out;
-  const auto f = [&](Vec2 x) { return (*this)(x); };
-  for (std::size_t k = 1; k + 1 < piece.size(); ++k) {
-    subdivide(piece[0], piece[k], piece[k + 1], components_, [&](Vec2 a, Vec2 b, Vec2 c) {
-      out += triangle_moments(a, b, c, r, f, kMixturePoints);
-    });
+  if (piece.size() < 3) return {};
+  Box box;
+  for (Vec2 v : piece)
+    box.add(v);
+  const Moments area = polygon_moments(piece, r);
+  // Each bump's mass over the piece is at most its weight times the piece's area times its
+  // height at the box's nearest point. Bumps are taken from the largest bound down, and the
+  // rest left out once all of them together could not reach kNegligible of what was summed:
+  // the moments are those of the whole mixture to the last bit.
+  struct Bound {
+    double mass;
+    std::size_t index;
+  };
+  std::vector<Bound> bounds;
+  bounds.reserve(components_.size());
+  double rest = 0.0;
+  for (std::size_t k = 0; k < components_.size(); ++k) {
+    const GaussianComponent& c = components_[k];
+    const double b =
+        c.weight * area.mass * std::exp(-distance2(c.mean, box) / (2.0 * c.sigma * c.sigma));
+    if (b > 0.0) bounds.push_back({b, k});
+    rest += b;
+  }
+  std::sort(bounds.begin(), bounds.end(), [](const Bound& a, const Bound& b) {
+    return a.mass > b.mass || (a.mass == b.mass && a.index < b.index);
+  });
+  Moments out = area.scaled(floor_);
+  for (const Bound& b : bounds) {
+    if (rest <= kNegligible * out.mass) break;
+    const GaussianComponent& c = components_[b.index];
+    out += gaussian_moments(piece, c.mean, c.sigma, r).scaled(c.weight);
+    rest -= b.mass;
   }
   return out;
 }

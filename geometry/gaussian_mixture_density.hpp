@@ -1,9 +1,9 @@
 #pragma once
 // φ(x) = floor + Σ weight · exp(-|x - mean|² / (2 sigma²)); components are not normalised.
 //
-// Accuracy: 8x8-point Gauss-Legendre quadrature on triangles no wider than the smallest
-// sigma, which keeps the relative error of mass and centroid below 1e-6 when sigma is at
-// least 1/20 of the environment's diameter (tests/geometry/test_density.cpp).
+// Moments are exact (geometry/gaussian_moments.hpp: along the piece's edges, whatever sigma is
+// against the piece), each bump's skipped when it cannot change them in double precision, so
+// a cell costs its edges times the bumps within reach of it, nothing per unit of area.
 #include <vector>
 
 #include "geometry/density.hpp"

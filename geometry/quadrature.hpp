@@ -14,6 +14,9 @@ struct QuadratureRule {
 };
 // m-point Gauss-Legendre on [0, 1], computed by Newton's method on P_m (cached for m <= 32).
 const QuadratureRule& gauss_legendre(int m);
+// m-point Gauss-Laguerre: ∫_0^∞ e^{-x} f(x) dx ≈ Σ w_i f(x_i), exact for polynomials of degree
+// up to 2m - 1; Newton's method on L_m in long double (cached for m <= 32).
+const QuadratureRule& gauss_laguerre(int m);
 
 // Moments of f over the triangle (a, b, c) relative to r, with m points per direction.
 template <class F>

@@ -57,7 +57,7 @@ TEST_CASE("Gauss-Legendre rules integrate polynomials exactly", "[quadrature]") 
   CHECK(m.mass == Approx(1.0 / 180.0).epsilon(1e-13));
 }
 
-TEST_CASE("Gaussian mixture mass and centroid to 1e-6 at sigma = diameter / 20", "[density]") {
+TEST_CASE("Gaussian mixture mass and centroid to 1e-13 at sigma = diameter / 20", "[density]") {
   // Ω = [-1, 1]²: the diameter of its box is 2√2, so sigma = 0.1414 is 1/20 of it.
   const double sigma = 2 * M_SQRT2 / 20;
   const Vec2 mu{0.3, -0.2};
@@ -69,10 +69,10 @@ TEST_CASE("Gaussian mixture mass and centroid to 1e-6 at sigma = diameter / 20",
   const double mass = 2.0 * g0(-1, 1, mu.x, sigma) * g0(-1, 1, mu.y, sigma) + floor * 4.0;
   const double sx = 2.0 * g1(-1, 1, mu.x, sigma) * g0(-1, 1, mu.y, sigma);
   const double sy = 2.0 * g0(-1, 1, mu.x, sigma) * g1(-1, 1, mu.y, sigma);
-  CHECK(cells.total_mass() == Approx(mass).epsilon(1e-6));
+  CHECK(cells.total_mass() == Approx(mass).epsilon(1e-13));
 
   // Over a partition into cells: the sums match the closed form, and each cell matches a
-  // reference computed with four times finer triangles and 20x20 points.
+  // quadrature reference on triangles sixteen times smaller with 20x20 points.
   VoronoiPartition part(cells, {{-0.5, -0.5}, {0.4, -0.3}, {0.1, 0.6}, {0.9, 0.9}, {0.25, -0.15}});
   double total = 0;
   Vec2 first{0, 0};
@@ -103,14 +103,15 @@ TEST_CASE("Gaussian mixture mass and centroid to 1e-6 at sigma = diameter / 20",
               ref += triangle_moments(t[0], t[1], t[2], part.generators()[i], f, 20);
           }
         });
-    CHECK(m.mass == Approx(ref.mass).epsilon(1e-6));
+    CHECK(m.mass == Approx(ref.mass).epsilon(1e-13));
     const Vec2 c = part.generators()[i] + m.first / m.mass;
     const Vec2 cref = part.generators()[i] + ref.first / ref.mass;
-    CHECK(distance(c, cref) <= 1e-6 * norm(cref) + 1e-9);
+    CHECK(distance(c, cref) <= 1e-13 * (norm(cref) + 1.0));
+    CHECK(m.second == Approx(ref.second).epsilon(1e-13));
   }
-  CHECK(total == Approx(mass).epsilon(1e-6));
-  CHECK(first.x / total == Approx(sx / mass).epsilon(1e-6));
-  CHECK(first.y / total == Approx(sy / mass).epsilon(1e-6));
+  CHECK(total == Approx(mass).epsilon(1e-13));
+  CHECK(first.x / total == Approx(sx / mass).epsilon(1e-13));
+  CHECK(first.y / total == Approx(sy / mass).epsilon(1e-13));
 }
 
 TEST_CASE("a Gaussian much narrower than Ω integrates where it is, to the closed form",
@@ -122,13 +123,13 @@ TEST_CASE("a Gaussian much narrower than Ω integrates where it is, to the close
   const GaussianMixtureDensity d({{mu, sigma, 3.0}}, floor);
   const CellIntegrator cells(env, d);
   const double mass = 3.0 * 2.0 * M_PI * sigma * sigma + floor * 1e6;
-  CHECK(cells.total_mass() == Approx(mass).epsilon(1e-9));
+  CHECK(cells.total_mass() == Approx(mass).epsilon(1e-13));
   // A cell holding the bump and one without it: the bump's mass where it lies.
   VoronoiPartition part(cells, {{500, 500}, {100, 100}});
   const double near = part.moments(0).mass, far = part.moments(1).mass;
   // The bisector x + y = 600 leaves the far cell a triangle of 180 000 m².
-  CHECK(far == Approx(floor * 180000.0).epsilon(1e-9));
-  CHECK(near == Approx(3.0 * 2.0 * M_PI * sigma * sigma + floor * 820000.0).epsilon(1e-9));
+  CHECK(far == Approx(floor * 180000.0).epsilon(1e-13));
+  CHECK(near == Approx(3.0 * 2.0 * M_PI * sigma * sigma + floor * 820000.0).epsilon(1e-13));
 }
 
 TEST_CASE("constant and bilinear rasters integrate exactly", "[density]") {
