@@ -18,6 +18,7 @@ import numpy as np
 from ._covsim import (
     Environment,
     Knowledge,
+    Partition,
     Robot,
     Scenario,
     ScenarioError,
@@ -32,8 +33,9 @@ from ._covsim import (
 from . import _covsim
 
 __all__ = [
-    "Environment", "Knowledge", "Robot", "Scenario", "ScenarioError", "SensorReading",
-    "Simulation", "cells", "components", "draw_environment", "environment", "load_run",
+    "Cells", "Environment", "Knowledge", "Partition", "Robot", "Scenario", "ScenarioError",
+    "SensorReading", "Simulation", "cells", "components", "draw_environment", "environment",
+    "load_run",
     "measures", "register_law",
     "register_planner", "sweep", "__version__",
 ]
@@ -45,26 +47,37 @@ def environment(scenario):
     return _covsim._environment(_as_scenario(scenario))
 
 
+class Cells(_covsim._Cells):
+    """Ω and φ parsed once, with the integrator over them: cells = Cells(environment, density),
+    then cells(generators) for each set of generators ((n, 2) array, metres) returns a
+    Partition: .mass (n,), .centroid (n, 2), .cost (n,) as arrays, .cell(i), .pieces(i), and
+    .to_list(), the dicts covsim.cells gives. A call costs what the partition costs in C++.
+    environment: a scenario's "environment" object (dict), an Environment, or a whole scenario
+    (a Scenario, a dict or a path), whose density is used when density is None. density: a
+    scenario's "density" object; None: uniform (or the scenario's). Generators at one point
+    split their cell into wedges."""
+
+    def __init__(self, environment, density=None):
+        if isinstance(environment, Environment):
+            rings = environment.rings
+            environment = {"outer": rings[0].tolist(), "holes": [r.tolist() for r in rings[1:]]}
+        if isinstance(environment, dict) and "outer" in environment:
+            scenario = {"environment": environment, "density": density or {"type": "uniform"}}
+        else:
+            scenario = _as_scenario(environment)
+            if density is not None:
+                scenario = Scenario.from_dict(dict(scenario.to_dict(), density=density))
+        super().__init__(_as_scenario(scenario))
+
+
 def cells(environment, density=None, generators=None):
     """The Voronoi partition of the generators ((n, 2) array, metres) restricted to Ω, without
     a run: per generator a dict with its cell, the convex pieces of cell ∩ Ω (arrays of
     vertices, metres), mass (∫φ, m² for a uniform density), centroid (metres) and cost
-    (½∫|x - g|²φ, m⁴ φ). environment: a scenario's "environment" object (dict), an
-    Environment, or a whole scenario (a Scenario, a dict or a path), whose density is used
-    when density is None. density: a scenario's "density" object; None: uniform (or the
-    scenario's). Generators at one point split their cell into wedges."""
+    (½∫|x - g|²φ, m⁴ φ). The arguments are Cells'; for many calls on one Ω keep a Cells."""
     if generators is None:
         raise ValueError("cells: give the generators, an (n, 2) array")
-    if isinstance(environment, Environment):
-        rings = environment.rings
-        environment = {"outer": rings[0].tolist(), "holes": [r.tolist() for r in rings[1:]]}
-    if isinstance(environment, dict) and "outer" in environment:
-        scenario = {"environment": environment, "density": density or {"type": "uniform"}}
-    else:
-        scenario = _as_scenario(environment)
-        if density is not None:
-            scenario = Scenario.from_dict(dict(scenario.to_dict(), density=density))
-    return _covsim._cells(_as_scenario(scenario), np.asarray(generators, dtype=float))
+    return Cells(environment, density)(np.asarray(generators, dtype=float)).to_list()
 
 
 def draw_environment(ax, environment, color="black", margin=0.02):

@@ -11,8 +11,15 @@ namespace covsim::python {
 
 nlohmann::json to_json(const py::handle& o) {
   const py::module_ json = py::module_::import("json");
+  // numpy arrays and numpy scalars stand for their lists and numbers (NaN is still refused).
+  const py::cpp_function numpy_values([](const py::handle& x) -> py::object {
+    if (py::hasattr(x, "tolist")) return x.attr("tolist")();
+    throw py::type_error("expected numbers, strings, lists or dicts, found " +
+                         py::str(py::type::of(x).attr("__name__")).cast<std::string>());
+  });
   return nlohmann::json::parse(
-      json.attr("dumps")(o, py::arg("allow_nan") = false).cast<std::string>());
+      json.attr("dumps")(o, py::arg("allow_nan") = false, py::arg("default") = numpy_values)
+          .cast<std::string>());
 }
 
 py::object to_python(const nlohmann::json& j) {

@@ -1,4 +1,5 @@
 import json
+import math
 
 import numpy as np
 import pytest
@@ -110,6 +111,38 @@ def test_cells_without_a_run_match_covsim_cells(cli, tmp_path):
         assert [c["cost"] for c in other] == [c["cost"] for c in cells]
     with pytest.raises(ValueError, match="generators"):
         covsim.cells(scenario)
+
+
+def test_cells_keeps_omega_and_density_between_calls():
+    environment = {"outer": [[0, 0], [4, 0], [4, 4], [0, 4]],
+                   "holes": [np.array([[1.0, 1.0], [1.0, 2.0], [2.0, 2.0], [2.0, 1.0]])]}
+    density = {"type": "gaussian_mixture",
+               "components": [{"mean": [3, 3], "sigma": 0.5, "weight": 2.0}], "floor": 0.1}
+    cells = covsim.Cells(environment, density)
+    # The bump over the square less the hole (products of normal masses), and the floor.
+    def normal(a, b):
+        return 0.5 * (math.erf(b / math.sqrt(2)) - math.erf(a / math.sqrt(2)))
+    bump = 2 * 2 * np.pi * 0.25 * (normal(-6, 2) ** 2 - normal(-4, -2) ** 2)
+    assert cells.total_mass == pytest.approx(0.1 * 15 + bump, rel=1e-13)
+    rng = np.random.default_rng(3)
+    for n in (1, 7, 40):
+        gens = rng.uniform(0, 4, (n, 2))
+        p = cells(gens)
+        assert isinstance(p, covsim.Partition) and len(p) == n
+        assert p.mass.shape == (n,) and p.centroid.shape == (n, 2) and p.cost.shape == (n,)
+        assert np.array_equal(p.generators, gens)
+        # The arrays are the dicts of covsim.cells, bit for bit, and the masses add up to Ω's.
+        for i, c in enumerate(covsim.cells(environment, density, gens)):
+            assert c["mass"] == p.mass[i] and c["cost"] == p.cost[i]
+            assert np.array_equal(c["centroid"], p.centroid[i])
+            assert np.array_equal(c["cell"], p.cell(i))
+            assert all(np.array_equal(a, b) for a, b in zip(c["pieces"], p.pieces(i)))
+        assert p.mass.sum() == pytest.approx(cells.total_mass, rel=1e-12)
+    assert np.array_equal(p.cell(-1), p.cell(n - 1))
+    with pytest.raises(IndexError):
+        p.cell(n)
+    with pytest.raises(ValueError, match=r"\(n, 2\) array"):
+        cells(np.zeros((3, 3)))
 
 
 def test_the_external_law_takes_targets_from_python(scenarios):
