@@ -80,6 +80,22 @@ inline SegmentProjection project_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   return {a + t * d, t};
 }
 
+// Distance between the segments [a, b] and [c, d]: 0 when they cross, else the least distance
+// from an end of one to the other.
+inline double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double o1 = cross(b - a, c - a), o2 = cross(b - a, d - a);
+  const double o3 = cross(d - c, a - c), o4 = cross(d - c, b - c);
+  if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) &&
+      ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
+    return 0.0;
+  const auto to = [](Vec2 p, Vec2 s, Vec2 e) {
+    return distance(p, project_to_segment(p, s, e).point);
+  };
+  const double ab = to(a, c, d) < to(b, c, d) ? to(a, c, d) : to(b, c, d);
+  const double cd = to(c, a, b) < to(d, a, b) ? to(c, a, b) : to(d, a, b);
+  return ab < cd ? ab : cd;
+}
+
 struct Box {
   Vec2 lo{INFINITY, INFINITY};
   Vec2 hi{-INFINITY, -INFINITY};

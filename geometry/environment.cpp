@@ -104,6 +104,7 @@ Environment::Environment(std::vector<Vec2> outer, std::vector<std::vector<Vec2>>
 }
 
 bool Environment::box_in_free_space(const Box& b) const {
+  if (!(is_finite(b.lo) && is_finite(b.hi) && b.lo.x <= b.hi.x && b.lo.y <= b.hi.y)) return false;
   const double fi0 = std::floor((b.lo.x - free_origin_.x) / free_cell_size_.x);
   const double fj0 = std::floor((b.lo.y - free_origin_.y) / free_cell_size_.y);
   const double fi1 = std::floor((b.hi.x - free_origin_.x) / free_cell_size_.x);
@@ -133,6 +134,12 @@ std::optional<std::uint32_t> Environment::locate(Vec2 p) const {
     found = t;
   });
   return found;
+}
+
+bool Environment::contains(Vec2 p) const {
+  Box b;
+  b.add(p);
+  return box_in_free_space(b) || locate(p).has_value();
 }
 
 std::optional<std::uint32_t> Environment::component_of(Vec2 p) const {
@@ -252,6 +259,10 @@ std::vector<double> Environment::boundary_crossings(Vec2 a, Vec2 b) const {
 }
 
 bool Environment::segment_inside(Vec2 a, Vec2 b) const {
+  Box box;
+  box.add(a);
+  box.add(b);
+  if (box_in_free_space(box)) return true;  // a box in free cells lies wholly in Ω
   if (!contains(a) || !contains(b)) return false;
   const std::vector<double> ts = boundary_crossings(a, b);
   for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
@@ -259,6 +270,22 @@ bool Environment::segment_inside(Vec2 a, Vec2 b) const {
     if (!contains(a + (0.5 * (ts[k] + ts[k + 1])) * (b - a))) return false;
   }
   return true;
+}
+
+bool Environment::clear_of_boundary(Vec2 a, Vec2 b, double clearance) const {
+  if (!is_finite(a) || !is_finite(b) || !(clearance >= 0.0) || !contains(a)) return false;
+  Box box;
+  box.add(a - Vec2{clearance, clearance});
+  box.add(a + Vec2{clearance, clearance});
+  box.add(b - Vec2{clearance, clearance});
+  box.add(b + Vec2{clearance, clearance});
+  if (box_in_free_space(box)) return true;
+  bool clear = true;
+  edge_index_.query(box, [&](std::uint32_t e) {
+    if (clear && !(segment_distance(a, b, boundary_[e].a, boundary_[e].b) > clearance))
+      clear = false;
+  });
+  return clear;
 }
 
 std::optional<RayHit> Environment::ray_cast(Vec2 origin, Vec2 direction, double range) const {

@@ -55,13 +55,17 @@ class Environment {
 
   // The triangle of mesh() containing p (boundary included, within tolerance()).
   std::optional<std::uint32_t> locate(Vec2 p) const;
-  bool contains(Vec2 p) const { return locate(p).has_value(); }
+  // In a free cell of the mask, p is in Ω without a search.
+  bool contains(Vec2 p) const;
   // The connected component of Ω containing p, if p is in Ω.
   std::optional<std::uint32_t> component_of(Vec2 p) const;
   std::uint32_t component_count() const { return mesh_.component_count; }
 
   // Whether the whole segment lies in Ω (touching the boundary is allowed).
   bool segment_inside(Vec2 a, Vec2 b) const;
+  // Whether no boundary edge comes within `clearance` of the segment [a, b] (a line of sight
+  // in free space with a margin).
+  bool clear_of_boundary(Vec2 a, Vec2 b, double clearance) const;
   // The point of Ω closest to p: p itself when inside; otherwise on ∂Ω. With a component,
   // the closest point of that component.
   Vec2 closest_point(Vec2 p) const;

@@ -49,7 +49,7 @@ FreeRay free_ray(const SensorReading& r, Vec2 u, double tolerance) {
     });
   };
   FreeRay f{kInf, std::nullopt};
-  for (const SensedPiece& piece : r.visible.pieces) {
+  for (const SensedPiece& piece : r.visible().pieces) {
     const Vec2 a = piece.a, s = piece.b - a;
     const double denom = cross(u, s);
     // Parallel: running along it. |s.x| + |s.y| bounds norm(s), so twice that decides the
@@ -76,7 +76,7 @@ std::optional<ContactEdge> walking_edge(const SensorReading& r, int dir, double 
 }
 
 std::vector<SensedChain> sensed_chains(const SensorReading& r, double tolerance) {
-  const std::vector<SensedPiece>& pieces = r.visible.pieces;
+  const std::vector<SensedPiece>& pieces = r.visible().pieces;
   const std::size_t n = pieces.size();
   std::vector<SensedChain> chains;
   if (n == 0) return chains;
@@ -129,7 +129,7 @@ std::vector<TangentNode> tangent_nodes(const SensorReading& r, Vec2 goal, double
     if (f.distance > 0.0 && f.distance >= std::min(r.range, dg) - tolerance)
       nodes.push_back(TangentNode{goal, dg, true});
   }
-  for (Vec2 o : r.visible.discontinuities) {
+  for (Vec2 o : r.visible().discontinuities) {
     const double dx = distance(o, x), dgo = distance(o, goal);
     if (dx > tolerance && dgo < bound) nodes.push_back(TangentNode{o, dx + dgo, false});
   }
@@ -155,7 +155,7 @@ ReachPoint reach_point(const SensorReading& r, Vec2 goal, const SensedChain* fol
     const double t = std::min({f.distance, dg, r.range});
     consider(t == dg ? goal : x + t * u);
   }
-  const std::vector<Vec2>& o = r.visible.discontinuities;
+  const std::vector<Vec2>& o = r.visible().discontinuities;
   for (Vec2 p : o)
     consider(p);
   // Discontinuities come in pairs (a piece's end, the next piece's start); a pair on one ray
@@ -166,10 +166,10 @@ ReachPoint reach_point(const SensorReading& r, Vec2 goal, const SensedChain* fol
     if (std::fabs(cross(a, b)) <= 1e-9 && dot(a, b) > 0.0)
       consider(project_to_segment(goal, o[k], o[k + 1]).point);
   }
-  const std::size_t n = r.visible.pieces.size();
+  const std::size_t n = r.visible().pieces.size();
   for (std::size_t k = 0; k < n; ++k) {
     if (followed != nullptr && followed->holds_piece(k, n)) continue;
-    consider(project_to_segment(goal, r.visible.pieces[k].a, r.visible.pieces[k].b).point);
+    consider(project_to_segment(goal, r.visible().pieces[k].a, r.visible().pieces[k].b).point);
   }
   return best;
 }

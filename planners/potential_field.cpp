@@ -28,7 +28,7 @@ Vec2 PotentialField::force(const SensorReading& r) const {
   // wall is not hidden behind that wall's own repulsion.
   const double fade = std::min(1.0, (dg / d0) * (dg / d0));
   const double eta = fade * p_.repulsive_gain * d0 * d0 * d0 / 48.0;
-  for (const SensedPiece& piece : r.visible.pieces) {
+  for (const SensedPiece& piece : r.visible().pieces) {
     const Vec2 o = project_to_segment(x, piece.a, piece.b).point;
     const double d = distance(x, o);
     if (d >= d0 || d <= env_.tolerance()) continue;  // touching walls are handled by sliding

@@ -32,13 +32,50 @@ SensorReading sense(const Environment& env, Vec2 p, double range) {
   r.position = r.origin = p;
   r.range = range;
   r.contacts = contacts_at(env, p);
-  if (!(range > 0.0)) return r;  // a contact sensor feels, it does not see
-  const VisibleBoundary v = visible_boundary(env, p, range);
-  r.visible.pieces.reserve(v.pieces.size());
-  for (const VisiblePiece& piece : v.pieces)
-    r.visible.pieces.push_back(SensedPiece{piece.a, piece.b});
-  r.visible.discontinuities = v.discontinuities;
+  if (range > 0.0) {
+    r.environment_ = &env;  // the visible boundary when first asked for
+  } else {
+    r.visible_.emplace();  // a contact sensor feels, it does not see
+  }
   return r;
+}
+
+const SensedBoundary& SensorReading::visible() const {
+  if (!visible_) {
+    SensedBoundary out;
+    if (environment_ != nullptr) {
+      const VisibleBoundary v = visible_boundary(*environment_, origin, range);
+      out.pieces.reserve(v.pieces.size());
+      for (const VisiblePiece& piece : v.pieces)
+        out.pieces.push_back(SensedPiece{piece.a, piece.b});
+      out.discontinuities = v.discontinuities;
+    }
+    visible_ = std::move(out);
+  }
+  return *visible_;
+}
+
+SensedBoundary& SensorReading::visible() {
+  static_cast<const SensorReading&>(*this).visible();
+  environment_ = nullptr;  // the caller may change the pieces: they are the reading now
+  return *visible_;
+}
+
+void SensorReading::set_visible(SensedBoundary v) {
+  visible_ = std::move(v);
+  environment_ = nullptr;
+}
+
+bool SensorReading::open_toward(Vec2 p, double clearance) const {
+  const double d = distance(p, position);
+  if (!(d > 0.0)) return false;
+  const Vec2 end = d <= range ? p : position + (range / d) * (p - position);
+  if (environment_ != nullptr) return environment_->clear_of_boundary(position, end, clearance);
+  if (!contacts.empty()) return false;
+  for (const SensedPiece& piece : visible().pieces) {
+    if (!(segment_distance(position, end, piece.a, piece.b) > clearance)) return false;
+  }
+  return true;
 }
 
 std::vector<ContactEdge> contacts_at(const Environment& env, Vec2 p) {
@@ -50,7 +87,7 @@ std::vector<ContactEdge> contacts_at(const Environment& env, Vec2 p) {
 
 void add_range_noise(SensorReading& r, RandomStream& rng, double sigma, double tolerance) {
   if (sigma <= 0.0) return;
-  std::vector<SensedPiece>& pieces = r.visible.pieces;
+  std::vector<SensedPiece>& pieces = r.visible().pieces;
   const std::vector<bool> jump = jumps(pieces, tolerance);
   const auto jitter = [&](Vec2 q) {
     const Vec2 d = q - r.position;
@@ -66,7 +103,7 @@ void add_range_noise(SensorReading& r, RandomStream& rng, double sigma, double t
     if (k + 1 < n && !jump[k]) pieces[k + 1].a = pieces[k].b;
   }
   if (n > 1 && !jump[n - 1]) pieces[0].a = pieces[n - 1].b;
-  r.visible.discontinuities = discontinuities(pieces, jump);
+  r.visible().discontinuities = discontinuities(pieces, jump);
 }
 
 }  // namespace covsim

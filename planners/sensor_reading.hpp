@@ -4,6 +4,7 @@
 // robot touches (a contact sensor feels a wall's direction, which is how a robot with range
 // 0 follows a wall). No obstacle, ring or edge ids: which sensed points belong to one
 // obstacle is for the planner to infer from geometry.
+#include <optional>
 #include <vector>
 
 #include "core/random_stream.hpp"
@@ -38,11 +39,28 @@ struct SensorReading {
   // and range describe the view from there; its pieces are walls wherever the robot stands.
   Vec2 origin;
   double range = 0.0;  // may be infinite
-  SensedBoundary visible;
   std::vector<ContactEdge> contacts;
+
+  // The visible boundary within the range. A reading from sense() takes it from Ω when first
+  // asked for, so a planner that decides without it (on an open way, say) costs no
+  // visibility query; the answer is the same either way.
+  const SensedBoundary& visible() const;
+  SensedBoundary& visible();
+  void set_visible(SensedBoundary v);
+  // Whether nothing the sensors report lies within `clearance` of the straight way from the
+  // position toward p, up to the range (p itself if nearer): a line of sight that is clear
+  // by a margin. Answered from Ω for a reading from sense(), from its pieces otherwise.
+  bool open_toward(Vec2 p, double clearance) const;
+
+ private:
+  friend SensorReading sense(const Environment& env, Vec2 p, double range);
+  mutable std::optional<SensedBoundary> visible_;
+  // Set in a reading from sense() whose visible boundary is still to be taken.
+  const Environment* environment_ = nullptr;
 };
 
 // A reading taken in the environment at p: what an ideal range and contact sensor report.
+// Its visible boundary is taken when first asked for (the environment must outlive it).
 SensorReading sense(const Environment& env, Vec2 p, double range);
 
 // The boundary edges touching p (what a contact sensor reports).

@@ -147,6 +147,19 @@ TangentBug::Decision TangentBug::motion_to_goal(const SensorReading& r, double m
         return walk_to(r, k, Mode::to_projection);
     }
   }
+  // The way to the goal open within the range, with a margin: the goal is a node, and every
+  // other node (a point of the sensed boundary, at least the margin m from the way) has a
+  // heuristic distance above the goal's by at least 2m²/d(x, goal), far beyond rounding, so
+  // the goal is the best node. Decided without the visible boundary, as the full choice
+  // below would decide.
+  if (r.open_toward(goal_, 1e3 * p_.tolerance)) {
+    const double dg = distance(goal_, x);
+    if (dg <= h_prev_ + p_.tolerance) {
+      h_prev_ = dg;
+      heading_ = goal_;
+      return move_toward(x, goal_, max_step);
+    }
+  }
   const std::vector<TangentNode> nodes =
       tangent_nodes(r, goal_, bound_ - p_.progress, p_.tolerance);
   const TangentNode* best = nullptr;

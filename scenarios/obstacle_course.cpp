@@ -100,16 +100,6 @@ Outline shape_outline(ObstacleShape s, RandomStream& rng) {
   return {};
 }
 
-double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const auto side = [](Vec2 p, Vec2 q, Vec2 r) { return cross(q - p, r - p); };
-  const double s1 = side(a, b, c), s2 = side(a, b, d), s3 = side(c, d, a), s4 = side(c, d, b);
-  if (((s1 > 0) != (s2 > 0)) && ((s3 > 0) != (s4 > 0))) return 0.0;  // they cross
-  return std::min({distance(c, project_to_segment(c, a, b).point),
-                   distance(d, project_to_segment(d, a, b).point),
-                   distance(a, project_to_segment(a, c, d).point),
-                   distance(b, project_to_segment(b, c, d).point)});
-}
-
 double ring_distance(const Ring& p, const Ring& q) {
   double d = INFINITY;
   for (std::size_t i = 0; i < p.size(); ++i) {

@@ -67,9 +67,13 @@ py::dict params_dict(const Params& p) {
   return d;
 }
 
-// A copy of a sensor reading, for Python.
+// A copy of a sensor reading, for Python, with its visible boundary taken: Python may keep it
+// after the step, when the environment a lazy reading points to may be gone.
 struct PyReading {
   SensorReading r;
+  explicit PyReading(const SensorReading& reading) : r(reading) {
+    r.set_visible(reading.visible());
+  }
 };
 
 class PyPlanner final : public Planner {
@@ -92,7 +96,7 @@ class PyPlanner final : public Planner {
   }
   PlanStep step(const SensorReading& reading, double max_step) override {
     py::gil_scoped_acquire gil;
-    const py::tuple t = obj_->attr("step")(PyReading{reading}, max_step);
+    const py::tuple t = obj_->attr("step")(PyReading(reading), max_step);
     if (t.size() != 2) throw py::value_error("a planner's step must return (next, status)");
     const Vec2 next = to_point(t[0]);
     try {
@@ -203,10 +207,10 @@ void bind_components(py::module_& m) {
           "pieces",
           [](const PyReading& s) {
             py::array_t<double> a(
-                {static_cast<py::ssize_t>(s.r.visible.pieces.size()), py::ssize_t{4}});
+                {static_cast<py::ssize_t>(s.r.visible().pieces.size()), py::ssize_t{4}});
             auto w = a.mutable_unchecked<2>();
-            for (std::size_t k = 0; k < s.r.visible.pieces.size(); ++k) {
-              const auto& p = s.r.visible.pieces[k];
+            for (std::size_t k = 0; k < s.r.visible().pieces.size(); ++k) {
+              const auto& p = s.r.visible().pieces[k];
               const auto i = static_cast<py::ssize_t>(k);
               w(i, 0) = p.a.x, w(i, 1) = p.a.y, w(i, 2) = p.b.x, w(i, 3) = p.b.y;
             }
@@ -215,7 +219,7 @@ void bind_components(py::module_& m) {
           "Visible boundary pieces within range, (k, 4) rows [ax, ay, bx, by] [m].")
       .def_property_readonly(
           "discontinuities",
-          [](const PyReading& s) { return to_array(s.r.visible.discontinuities); },
+          [](const PyReading& s) { return to_array(s.r.visible().discontinuities); },
           "Where the visible boundary jumps, (m, 2) [m].")
       .def_property_readonly(
           "contacts",

@@ -61,7 +61,7 @@ awk -F, 'NR > 1 && $1 > 30 { found = 1 } END { exit !found }' run2/trajectory.cs
 
 # A sweep stops, keeps whole results only, and resumes to what an uninterrupted one gives.
 cat > sweep.json <<JSON
-{"scenario": "$office", "grid": {"convergence.max_time": [60]}, "seeds": [1, 2, 3, 4]}
+{"scenario": "$office", "grid": {"convergence.max_time": [400]}, "seeds": [1, 2, 3, 4]}
 JSON
 rc=$(interrupt INT s sweep sweep.json --out s --jobs 2)
 [ "$rc" -eq 130 ] && grep -q "interrupted by SIGINT" err.txt ||

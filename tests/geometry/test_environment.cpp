@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "core/random_stream.hpp"
 #include "geometry/environment.hpp"
 #include "geometry/geometry_error.hpp"
 #include "tests/geometry/shapes.hpp"
@@ -189,4 +190,34 @@ TEST_CASE("a segment that slips past a vertex into an obstacle is not in Ω", "[
   CHECK(stop.y == Approx(0.0).margin(1e-9));  // stopped at the crossbar
   // Past the vertex on the free side, the same segment is in Ω.
   CHECK(env.segment_inside({0.05 + eps, 0.2}, goal));
+}
+
+TEST_CASE("the free-space mask answers as the search would", "[environment]") {
+  // Many small obstacles: most points and short segments lie in free mask cells, the rest
+  // near walls; the answers with the mask's shortcut equal the search's and brute force's.
+  std::vector<std::vector<Vec2>> holes;
+  for (int j = 0; j < 5; ++j) {
+    for (int i = 0; i < 5; ++i)
+      holes.push_back(square(1 + 2 * i, 1 + 2 * j, 1.7 + 2 * i, 1.4 + 2 * j));
+  }
+  const Environment env(square(0, 0, 10, 10), holes);
+  RandomStream rng(7, 0, "mask");
+  std::size_t near = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const Vec2 p{rng.uniform(-0.5, 10.5), rng.uniform(-0.5, 10.5)};
+    CHECK(env.contains(p) == env.locate(p).has_value());
+    const Vec2 q = p + Vec2{rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3)};
+    const double clearance = rng.uniform(0.0, 0.2);
+    // Brute force: no edge within the clearance (and a start in Ω).
+    bool clear = env.contains(p);
+    for (const BoundaryEdge& e : env.boundary())
+      clear = clear && segment_distance(p, q, e.a, e.b) > clearance;
+    near += clear ? 0 : 1;
+    CHECK(env.clear_of_boundary(p, q, clearance) == clear);
+    // A segment clear of the boundary lies in Ω.
+    if (clear) CHECK(env.segment_inside(p, q));
+  }
+  CHECK(near > 2000);  // the walls were met often enough to test both answers
+  CHECK_FALSE(env.contains({NAN, 1}));
+  CHECK_FALSE(env.clear_of_boundary({NAN, 1}, {1, 1}, 0.1));
 }

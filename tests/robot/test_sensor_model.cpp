@@ -26,7 +26,7 @@ SensorConfig sensor_with_range(double range) {
 
 double visible_length(const SensorReading& r) {
   double l = 0.0;
-  for (const SensedPiece& p : r.visible.pieces)
+  for (const SensedPiece& p : r.visible().pieces)
     l += distance(p.a, p.b);
   return l;
 }
@@ -53,11 +53,11 @@ TEST_CASE("an exact sensor reads the room afresh at each step, as its range allo
     CHECK(r.position == p);
     CHECK(r.origin == p);
     CHECK(r.range == 0.0);
-    CHECK(r.visible.pieces.empty());
+    CHECK(r.visible().pieces.empty());
     CHECK(r.contacts.empty());  // away from every wall
     // On the bottom wall it feels that wall, and still sees nothing.
     const SensorReading on_wall = model.reading(0, {1.0, 0.0});
-    CHECK(on_wall.visible.pieces.empty());
+    CHECK(on_wall.visible().pieces.empty());
     REQUIRE(on_wall.contacts.size() == 1);
     CHECK(on_wall.contacts[0].a.y == 0.0);
     CHECK(on_wall.contacts[0].b.y == 0.0);
@@ -67,8 +67,8 @@ TEST_CASE("an exact sensor reads the room afresh at each step, as its range allo
     SensorModel model(kernel, env, sensor_with_range(0.5), 1, pos.callback());
     const SensorReading r = model.reading(0, p);
     CHECK(r.range == 0.5);
-    REQUIRE_FALSE(r.visible.pieces.empty());
-    for (const SensedPiece& piece : r.visible.pieces) {
+    REQUIRE_FALSE(r.visible().pieces.empty());
+    for (const SensedPiece& piece : r.visible().pieces) {
       CHECK(distance(piece.a, p) <= 0.5 + 1e-9);
       CHECK(distance(piece.b, p) <= 0.5 + 1e-9);
     }
@@ -86,10 +86,10 @@ TEST_CASE("an exact sensor reads the room afresh at each step, as its range allo
     // the rays past its corners (1.25, 0.75) and (0.75, 1.25) meet the far walls at 1.125.
     CHECK(visible_length(r) == Approx(8.0 - 2 * 0.875 + 1.0).epsilon(1e-12));
     const SensorReading exact = sense(env, p, INFINITY);
-    REQUIRE(exact.visible.pieces.size() == r.visible.pieces.size());
-    for (std::size_t k = 0; k < r.visible.pieces.size(); ++k) {
-      CHECK(r.visible.pieces[k].a == exact.visible.pieces[k].a);
-      CHECK(r.visible.pieces[k].b == exact.visible.pieces[k].b);
+    REQUIRE(exact.visible().pieces.size() == r.visible().pieces.size());
+    for (std::size_t k = 0; k < r.visible().pieces.size(); ++k) {
+      CHECK(r.visible().pieces[k].a == exact.visible().pieces[k].a);
+      CHECK(r.visible().pieces[k].b == exact.visible().pieces[k].b);
     }
     // In an empty room every wall is seen whole.
     const Environment square({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, {});
@@ -118,18 +118,18 @@ TEST_CASE("range noise comes from each robot's sensor-noise stream, N(0, σ²) a
     const SensorReading exact = sense(square, p, INFINITY);
     SensorReading expected = exact;
     add_range_noise(expected, robot0, sigma, square.tolerance());
-    REQUIRE(r.visible.pieces.size() == expected.visible.pieces.size());
-    for (std::size_t j = 0; j < r.visible.pieces.size(); ++j) {
-      REQUIRE(r.visible.pieces[j].a == expected.visible.pieces[j].a);
-      REQUIRE(r.visible.pieces[j].b == expected.visible.pieces[j].b);
+    REQUIRE(r.visible().pieces.size() == expected.visible().pieces.size());
+    for (std::size_t j = 0; j < r.visible().pieces.size(); ++j) {
+      REQUIRE(r.visible().pieces[j].a == expected.visible().pieces[j].a);
+      REQUIRE(r.visible().pieces[j].b == expected.visible().pieces[j].b);
       // Each piece's end is measured once (shared with the next piece).
-      const double e = distance(r.visible.pieces[j].b, p) - distance(exact.visible.pieces[j].b, p);
+      const double e = distance(r.visible().pieces[j].b, p) - distance(exact.visible().pieces[j].b, p);
       sum += e;
       sum2 += e * e;
       ++n;
     }
     const SensorReading other = model.reading(1, p);
-    robots_differ = robots_differ || !(other.visible.pieces[0].b == r.visible.pieces[0].b);
+    robots_differ = robots_differ || !(other.visible().pieces[0].b == r.visible().pieces[0].b);
     CHECK(r.origin == p);  // without a period a reading is always taken where the robot is
   }
   const double mean = sum / double(n);
@@ -200,8 +200,8 @@ TEST_CASE("with a period, a reading is as old as the last sense event", "[sensor
   pos.at[0] = {1.9, 1.9};
   kernel.run_until(SimTime::from_seconds(0.9));
   r = model.reading(0, pos.at[0]);
-  REQUIRE_FALSE(r.visible.pieces.empty());
-  for (const SensedPiece& piece : r.visible.pieces)
+  REQUIRE_FALSE(r.visible().pieces.empty());
+  for (const SensedPiece& piece : r.visible().pieces)
     CHECK(distance(piece.a, {0.6, 0.5}) <= 0.75 + 1e-9);
   CHECK(kernel.events_dispatched() == 2 * 2);  // t = 0 and 0.5, two robots
 }
