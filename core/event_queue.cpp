@@ -64,6 +64,12 @@ void EventQueue::sort_batch() {
 
 std::uint32_t EventQueue::take_front() {
   const bool from_run = run_next_ < run_.size();
+  // One event at its instant, the usual case with continuous delays: nothing to order.
+  if (!from_run && heap_.empty() && batch_.size() == 1) {
+    const std::uint32_t record = batch_.front().record();
+    batch_.clear();
+    return record;
+  }
   if (!batch_.empty()) {
     // The batch is due when its least entry precedes both the run's and the heap's next.
     const bool due = (!from_run || RunsBefore{}(batch_least_, run_[run_next_])) &&
