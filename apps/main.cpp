@@ -4,6 +4,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "apps/typo_hint.hpp"
 #include "core/trace.hpp"
 #include "io/interrupt.hpp"
 #include "scenarios/scenario_error.hpp"
@@ -29,6 +30,10 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
+    if (code != 0) {
+      if (const auto hint = covsim::app::typo_hint(app, argc, argv))
+        std::cerr << "covsim: " << *hint << '\n';
+    }
     return code == 0 ? 0 : 2;
   } catch (const covsim::Interrupted& e) {
     std::cerr << "covsim: " << e.what() << "; partial outputs removed\n";

@@ -1,5 +1,7 @@
 // `covsim random-env --seed N [--out FILE]`: a random polygonal environment with holes and
 // robots, as a scenario file (stdout without --out).
+#include <fmt/format.h>
+
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -37,6 +39,14 @@ void add_random_env_command(CLI::App& app) {
       scenario = random_environment(*spec);
     } catch (const std::invalid_argument& e) {
       throw InputError(std::string("random-env: ") + e.what());
+    }
+    // Holes are placed at random and kept only where they fit: say when fewer did.
+    const std::size_t placed = scenario["environment"]["holes"].size();
+    if (placed < spec->holes) {
+      std::cerr << fmt::format(
+          "random-env: placed {} of the {} holes asked for; the others did not fit in the {} m "
+          "square (a larger --size makes room)\n",
+          placed, spec->holes, spec->size);
     }
     const std::string text = scenario.dump(2) + "\n";
     // What is written must load as a scenario.

@@ -31,7 +31,8 @@ void ScenarioOptions::add_to(CLI::App* cmd, const std::string& scenario_help) {
                   "Seed, replacing the scenario's (what it draws and the run's randomness)");
   cmd->add_option("--set", sets,
                   "PATH=VALUE: set a dotted path of the scenario as a sweep does "
-                  "(--set network.loss.p=0.3 --set sensor.range=null); repeatable")
+                  "(--set network.loss.model=bernoulli --set network.loss.p=0.3 --set "
+                  "sensor.range=null); repeatable")
       ->allow_extra_args(false);
 }
 

@@ -1,17 +1,30 @@
 // The program route: a program that links covsim, registers the damped Lloyd law and runs
 // a sweep over its gain through the entry point `covsim sweep` uses.
 //   damped_lloyd_demo SCENARIO OUT_DIR
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <string_view>
 
 #include "analysis/sweep/sweep_runner.hpp"
 #include "damped_lloyd.hpp"
+#include "scenarios/scenario_error.hpp"
 #include "sim/plugin.hpp"
 
-int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::cerr << "usage: damped_lloyd_demo SCENARIO OUT_DIR\n";
+namespace {
+constexpr const char* kUsage =
+    "usage: damped_lloyd_demo SCENARIO OUT_DIR\n"
+    "  sweeps the damped Lloyd law's gain (0.3 and 1) on SCENARIO into OUT_DIR\n";
+}  // namespace
+
+int main(int argc, char** argv) try {
+  if (argc >= 2 && (std::string_view(argv[1]) == "--help" || std::string_view(argv[1]) == "-h")) {
+    std::cout << kUsage;
+    return 0;
+  }
+  if (argc != 3) {
+    std::cerr << kUsage;
     return 2;
   }
   covsim::registries().laws.add(example::damped_lloyd_entry());
@@ -33,4 +46,10 @@ int main(int argc, char** argv) {
     ok = ok && !r.error && r.converged();
   }
   return ok ? 0 : 1;
+} catch (const covsim::ScenarioError& e) {
+  std::cerr << "damped_lloyd_demo: " << e.what() << "\n";
+  return 2;
+} catch (const std::exception& e) {
+  std::cerr << "damped_lloyd_demo: " << e.what() << "\n";
+  return 1;
 }

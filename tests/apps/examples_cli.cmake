@@ -29,10 +29,32 @@ if(CCACHE)
   set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${CCACHE})
 endif()
 foreach(example bug2_planner damped_lloyd_law)
+  # With no build type given, as the examples' own comments show: they default to Release.
   run("configuring ${example}" ${CMAKE_COMMAND} -S ${SOURCE}/examples/${example}
       -B ${WORK}/${example} -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX}
-      -DCMAKE_BUILD_TYPE=Release ${launcher})
+      ${launcher})
+  file(STRINGS ${WORK}/${example}/CMakeCache.txt build_type REGEX "^CMAKE_BUILD_TYPE:")
+  if(NOT build_type MATCHES "=Release$")
+    message(FATAL_ERROR "${example} does not default to Release: ${build_type}")
+  endif()
   run("building ${example}" ${CMAKE_COMMAND} --build ${WORK}/${example} -j 2)
+endforeach()
+
+# --help is help, and a bad argument an error with exit 2, never a crash.
+foreach(program bug2_planner/bug2_demo damped_lloyd_law/damped_lloyd_demo)
+  run("${program} --help" ${WORK}/${program} --help)
+  if(NOT out MATCHES "^usage: ")
+    message(FATAL_ERROR "${program} --help: ${out}")
+  endif()
+  set(rest ${WORK}/out)  # damped_lloyd_demo's OUT_DIR
+  if(program MATCHES "bug2")
+    set(rest 10)  # bug2_demo's CASES
+  endif()
+  execute_process(COMMAND ${WORK}/${program} ${WORK}/no-such.json ${rest} RESULT_VARIABLE rc
+                  ERROR_VARIABLE err OUTPUT_QUIET)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "no-such.json")
+    message(FATAL_ERROR "${program} on a missing scenario: expected exit 2 naming it, got ${rc}: ${err}")
+  endif()
 endforeach()
 
 # Route 1: the user's own programs.

@@ -181,3 +181,9 @@ endif()
 file(WRITE ${WORK}/no-markers.md "nothing here\n")
 bad("--update-docs without markers" "no-markers.md: no lines" list --update-docs
     ${WORK}/no-markers.md)
+
+# A mistyped command or option: the error says what it most likely meant.
+bad("a mistyped command" "'rnu' is no covsim command: did you mean 'run'\\?" rnu ${u})
+bad("a mistyped option" "'--trac' is no option of covsim run: did you mean '--trace'\\?"
+    run ${u} --trac t.trace)
+bad("an unknown command" "the commands are cells, describe" frobnicate)

@@ -33,3 +33,12 @@ execute_process(COMMAND ${COVSIM} random-env --seed 1 --robots 0 --out ${WORK}/n
 if(NOT rc EQUAL 2 OR NOT err MATCHES "robots" OR EXISTS ${WORK}/none.json)
   message(FATAL_ERROR "zero robots: expected exit 2 and no file, got ${rc}: ${err}")
 endif()
+
+# Asked for more holes than fit: the scenario has fewer, and the program says how many.
+execute_process(COMMAND ${COVSIM} random-env --seed 1 --holes 40 --out ${WORK}/many.json
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+file(READ ${WORK}/many.json many)
+string(JSON placed LENGTH "${many}" environment holes)
+if(NOT rc EQUAL 0 OR NOT placed LESS 40 OR NOT err MATCHES "placed ${placed} of the 40 holes")
+  message(FATAL_ERROR "40 holes: expected exit 0 and 'placed ${placed} of the 40 holes', got ${rc}: ${err}")
+endif()
