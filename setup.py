@@ -41,14 +41,18 @@ class CMakeBuild(build_ext):
                 ["cmake", "-S", str(ROOT), "-B", str(folder), *generator,
                  "-DCMAKE_BUILD_TYPE=Release", "-DCOVSIM_PYTHON=ON", "-DCOVSIM_BUILD_TESTS=OFF",
                  "-DCOVSIM_BUILD_BENCH=OFF", f"-DPython_EXECUTABLE={sys.executable}"])
-        subprocess.check_call(["cmake", "--build", str(folder), "--target", "_covsim", "-j",
-                               str(os.cpu_count() or 1)])
+        subprocess.check_call(["cmake", "--build", str(folder), "--target", "_covsim", "covsim",
+                               "-j", str(os.cpu_count() or 1)])
         built = sorted((folder / "python" / "covsim").glob("_covsim*.so"))
         if not built:
             raise RuntimeError(f"{folder}: the build made no covsim/_covsim module")
         target = pathlib.Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(built[0], target)
+        # Which Python the module is for, and the covsim program behind the `covsim` command.
+        shutil.copy2(folder / "python" / "covsim" / "_build.py", target.parent / "_build.py")
+        (target.parent / "bin").mkdir(exist_ok=True)
+        shutil.copy2(folder / "apps" / "covsim", target.parent / "bin" / "covsim")
 
 
 setup(
@@ -57,4 +61,5 @@ setup(
     package_dir={"covsim": "python/covsim"},
     ext_modules=[Extension("covsim._covsim", sources=[])],
     cmdclass={"build": Build, "build_ext": CMakeBuild},
+    entry_points={"console_scripts": ["covsim = covsim._command:main"]},
 )

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "planners/planner_registry.hpp"
+#include "robot/component_error.hpp"
 #include "robot/coverage_law_registry.hpp"
 #include "robot/event_classes.hpp"
 #include "robot/ideal_view.hpp"
@@ -77,12 +78,31 @@ void CoverageController::start() {
                             check_kind_, event_class::world, event_class::check);
 }
 
+template <class F>
+auto CoverageController::guarded(std::uint32_t i, std::string_view role, std::string_view name,
+                                 F&& f) {
+  try {
+    return f();
+  } catch (const ComponentError&) {
+    throw;
+  } catch (const std::exception& e) {
+    std::throw_with_nested(ComponentError(
+        fmt::format("robot {}'s {} \"{}\" at t = {} s", i, role, name, kernel_.now().seconds()),
+        e.what()));
+  }
+}
+
 void CoverageController::loop1(std::uint32_t i) {
   if (!view_->ready(i)) return;
   // Algorithm 1, lines 3-5: what the robot knows, and the law's target from it.
   view_->refresh(i);
   Robot& r = robots_[i];
-  r.virtual_target = law_->target(r, view_->knowledge(i, law_->generators()));
+  r.virtual_target = guarded(i, "coverage law", config_.law.type, [&] {
+    const Vec2 t = law_->target(r, view_->knowledge(i, law_->generators()));
+    if (!is_finite(t))
+      throw std::invalid_argument(fmt::format("a target must be finite, found ({}, {})", t.x, t.y));
+    return t;
+  });
   // Algorithm 2, lines 2-4: an obstacle boundary Voronoi region projects its target.
   r.projected = !env_.contains(r.virtual_target);
   r.real_target = r.projected ? env_.closest_point(r.virtual_target) : r.virtual_target;
@@ -107,7 +127,8 @@ void CoverageController::loop1(std::uint32_t i) {
                          !env_.contains(r.assigned) &&
                          at_closest_point(r.assigned, env_.closest_point(r.assigned)))
                   : distance(r.real_target, r.position) <= tol_.position;
-  r.stable = is_settled(r.status) && at_target && law_->at_rest(r, tol_);
+  r.stable = is_settled(r.status) && at_target &&
+             guarded(i, "coverage law", config_.law.type, [&] { return law_->at_rest(r, tol_); });
   if (r.stable) return;
   // Only a target that moved (by more than the position tolerance) restarts the planner: a
   // goal it reached, found unreachable or gave up on is never handed to it again (it would
@@ -121,7 +142,7 @@ void CoverageController::loop1(std::uint32_t i) {
     if (is_settled(r.status)) {
       set_goal(r, goal);
     } else {
-      r.planner->move_goal(goal);
+      guarded(i, "planner", r.planner->name(), [&] { r.planner->move_goal(goal); });
       r.goal = goal;
     }
     r.assigned = r.virtual_target;
@@ -149,7 +170,7 @@ double CoverageController::excursion(Vec2 p, Vec2 q) const {
 }
 
 void CoverageController::set_goal(Robot& r, Vec2 goal) {
-  r.planner->set_goal(goal);
+  guarded(r.id, "planner", r.planner->name(), [&] { r.planner->set_goal(goal); });
   r.goal = goal;
   r.status = PlanStatus::moving;
 }
@@ -158,7 +179,13 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
   Robot& r = robots_[i];
   if (!is_settled(r.status)) {
     // Algorithm 2, line 5: a planner step toward the real target, in the real world.
-    const PlanStep s = r.planner->step(sensor_->reading(i, r.position), step_);
+    const PlanStep s = guarded(i, "planner", r.planner->name(), [&] {
+      const PlanStep step = r.planner->step(sensor_->reading(i, r.position), step_);
+      if (!is_finite(step.next))
+        throw std::invalid_argument(
+            fmt::format("a step must be a finite point, found ({}, {})", step.next.x, step.next.y));
+      return step;
+    });
     // A robot moves at most its step length per planner step, whatever the planner asks.
     if (!(distance(r.position, s.next) <= step_ * (1.0 + 1e-9))) {
       throw std::runtime_error(fmt::format(

@@ -34,6 +34,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "core/kernel.hpp"
@@ -114,6 +115,10 @@ class CoverageController {
   }
 
  private:
+  // Runs f, a call into robot i's component (role, name), turning what it throws into a
+  // ComponentError naming the robot, the component and the time, the cause nested.
+  template <class F>
+  auto guarded(std::uint32_t i, std::string_view role, std::string_view name, F&& f);
   void loop1(std::uint32_t i);
   // The goal loop 1 hands robot r's planner under the projection policy.
   Vec2 planner_goal(const Robot& r) const;

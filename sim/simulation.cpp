@@ -3,8 +3,10 @@
 #include "sim/provenance.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/trace.hpp"
+#include "io/interrupt.hpp"
 #include "planners/planner_registry.hpp"
 #include "robot/external_law.hpp"
 #include "scenarios/scenario_error.hpp"
@@ -74,28 +76,45 @@ void Simulation::finish() {
   observers_->on_finish(kernel_->now(), *controller_);
 }
 
+template <class F>
+void Simulation::guarded(F&& f) {
+  if (failed_) {
+    throw std::logic_error("the simulation stopped on an error and cannot go on (" + *failed_ +
+                           "): make a new one");
+  }
+  try {
+    if (!started_) {
+      controller_->start();
+      started_ = true;
+    }
+    f();
+  } catch (const Interrupted&) {
+    throw;  // between events: the state is whole, the run may go on
+  } catch (const std::exception& e) {
+    failed_ = e.what();  // a handler stopped half-way: its state is not to be trusted
+    throw;
+  }
+}
+
 bool Simulation::step() {
   if (finished_) return false;
-  if (!started_) {
-    controller_->start();
-    started_ = true;
-  }
-  const RunResult r = kernel_->run_until(max_time(), 1);
-  if (r.reason != StopReason::event_limit) finish();
+  guarded([&] {
+    const RunResult r = kernel_->run_until(max_time(), 1);
+    if (r.reason != StopReason::event_limit) finish();
+  });
   return !finished_;
 }
 
 void Simulation::run_until(SimTime t) {
   if (finished_) return;
-  if (!started_) {
-    controller_->start();
-    started_ = true;
-  }
-  const SimTime until = std::min(t, max_time());
-  if (until < kernel_->now()) return;
-  const RunResult r = kernel_->run_until(until);
-  if (r.reason == StopReason::stopped || r.reason == StopReason::queue_empty || until == max_time())
-    finish();
+  guarded([&] {
+    const SimTime until = std::min(t, max_time());
+    if (until < kernel_->now()) return;
+    const RunResult r = kernel_->run_until(until);
+    if (r.reason == StopReason::stopped || r.reason == StopReason::queue_empty ||
+        until == max_time())
+      finish();
+  });
 }
 
 CoverageOutcome Simulation::run() {

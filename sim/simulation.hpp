@@ -5,6 +5,7 @@
 // The run ends when it converges, a planner fails, every robot is stuck, or at max_time.
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "sim/coverage_run.hpp"
@@ -22,7 +23,9 @@ class Simulation {
 
   // Observers see every motion and sample; add them before the first step.
   void add_observer(CoverageObserver* o);
-  // Dispatches one event; false once the run has ended (no event is then dispatched).
+  // Dispatches one event; false once the run has ended (no event is then dispatched). An
+  // exception from a component (a ComponentError, naming it) ends the simulation: every
+  // later step, run_until or run throws std::logic_error saying so.
   bool step();
   // Runs to time t (clamped to max_time) or to the end of the run, whichever comes first.
   void run_until(SimTime t);
@@ -30,6 +33,8 @@ class Simulation {
   CoverageOutcome run();
 
   bool finished() const { return finished_; }
+  // The error that stopped the simulation, if one did.
+  const std::optional<std::string>& failure() const { return failed_; }
   SimTime now() const { return kernel_->now(); }
   SimTime max_time() const { return scenario_.coverage.max_time; }
   std::uint64_t fingerprint() const { return kernel_->fingerprint().value(); }
@@ -46,6 +51,9 @@ class Simulation {
  private:
   class Observers;
   void finish();
+  // Starts the run if needed and runs f, recording an exception that escapes it.
+  template <class F>
+  void guarded(F&& f);
 
   Scenario scenario_;
   std::unique_ptr<Kernel> kernel_;
@@ -54,6 +62,7 @@ class Simulation {
   std::unique_ptr<CoverageController> controller_;
   bool started_ = false;
   bool finished_ = false;
+  std::optional<std::string> failed_;
 };
 
 }  // namespace covsim

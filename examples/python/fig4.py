@@ -41,6 +41,7 @@ ax.set_aspect("equal")
 ax.legend(loc="upper right", fontsize=8)
 ax.set_title(f"two_obstacles: H real {outcome['cost']['real']:.4g}, "
              f"virtual {outcome['cost']['virtual']:.4g}")
+os.makedirs(args.out, exist_ok=True)
 out = os.path.join(args.out, "fig4.png")
 fig.savefig(out, dpi=100)
 print(f"wrote {out}: {int(projected.sum())} projected")

@@ -14,4 +14,4 @@ rows = covsim.sweep({"scenario": str(pathlib.Path(__file__).resolve().parents[2]
                      "seeds": {"count": a.seeds}}, jobs=2)
 stats = rows.groupby("network.loss.p").agg(time=("sim_time", "mean"), sd=("sim_time", "std"), H=("cost_real", "mean"))
 ax = stats.plot(y="time", yerr="sd", marker="o", legend=False, xlabel="loss probability", ylabel="time to converge [s]")
-ax.figure.savefig(os.path.join(a.out, "loss_study.png")); print(stats.to_string())
+os.makedirs(a.out, exist_ok=True); ax.figure.savefig(os.path.join(a.out, "loss_study.png")); print(stats.to_string())

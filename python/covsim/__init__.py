@@ -7,13 +7,30 @@ run folders, and planners and coverage laws written in Python. See docs/python.m
     sim.run()
     sim.positions          # (n, 2) numpy array, metres
 """
-import csv
-import gzip
-import json
-import os
-import tempfile
+import csv as _csv
+import gzip as _gzip
+import json as _json
+import os as _os
+import tempfile as _tempfile
 
-import numpy as np
+from . import _build
+
+
+def _wrong_python(error):
+    import sys
+
+    return ImportError(
+        f"covsim was built for {_build.python} (Python {_build.version}); this is "
+        f"{sys.executable} (Python {sys.version.split()[0]}), where it cannot load ({error}). "
+        f"Run it with {_build.python}, or build covsim for this Python: "
+        f"cmake -DPython_EXECUTABLE={sys.executable} ...")
+
+
+try:
+    import numpy as _np
+    from . import _covsim
+except ImportError as error:
+    raise _wrong_python(error) from error
 
 from ._covsim import (
     Environment,
@@ -30,7 +47,6 @@ from ._covsim import (
     register_law,
     register_planner,
 )
-from . import _covsim
 
 __all__ = [
     "Cells", "Environment", "Knowledge", "Partition", "Robot", "Scenario", "ScenarioError",
@@ -77,7 +93,7 @@ def cells(environment, density=None, generators=None):
     (½∫|x - g|²φ, m⁴ φ). The arguments are Cells'; for many calls on one Ω keep a Cells."""
     if generators is None:
         raise ValueError("cells: give the generators, an (n, 2) array")
-    return Cells(environment, density)(np.asarray(generators, dtype=float)).to_list()
+    return Cells(environment, density)(_np.asarray(generators, dtype=float)).to_list()
 
 
 def draw_environment(ax, environment, color="black", margin=0.02):
@@ -94,16 +110,24 @@ def draw_environment(ax, environment, color="black", margin=0.02):
     lo, hi = outer.min(axis=0), outer.max(axis=0)
     pad = margin * (hi - lo)
     (x0, y0), (x1, y1) = lo - pad, hi + pad
-    box = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
+    box = _np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
     rings = [box, outer[::-1]] + [ring for ring in environment.rings[1:]]
     vertices, codes = [], []
     for ring in rings:
         vertices += list(ring) + [ring[0]]
         codes += [Path.MOVETO] + [Path.LINETO] * (len(ring) - 1) + [Path.CLOSEPOLY]
-    ax.add_patch(PathPatch(Path(np.array(vertices), codes), facecolor=color, edgecolor="none"))
+    ax.add_patch(PathPatch(Path(_np.array(vertices), codes), facecolor=color, edgecolor="none"))
     ax.set_xlim(x0, x1)
     ax.set_ylim(y0, y1)
     ax.set_aspect("equal")
+
+
+def _renamed(error, file, name):
+    """A ScenarioError like error, with `file` in its message and attribute read as name."""
+    renamed = ScenarioError(str(error).replace(file, name))
+    renamed.file = name if error.file == file else error.file
+    renamed.path = error.path
+    return renamed
 
 
 def _as_scenario(s):
@@ -111,7 +135,7 @@ def _as_scenario(s):
         return s
     if isinstance(s, dict):
         return Scenario.from_dict(s)
-    return Scenario.from_file(os.fspath(s))
+    return Scenario.from_file(_os.fspath(s))
 
 
 def sweep(spec, jobs=1, out=None, keep_series=False):
@@ -124,22 +148,29 @@ def sweep(spec, jobs=1, out=None, keep_series=False):
     value). Results do not depend on jobs. A rerun into the same out reuses every finished run
     (docs/sweeps.md), as `covsim sweep` does: a spec object is kept as out/spec.json, so that
     the sweep file of both calls is the same."""
-    with tempfile.TemporaryDirectory(prefix="covsim-sweep-") as scratch:
+    with _tempfile.TemporaryDirectory(prefix="covsim-sweep-") as scratch:
         if isinstance(spec, dict):
             spec = dict(spec)
             if isinstance(spec.get("scenario"), str):
-                spec["scenario"] = os.path.abspath(spec["scenario"])
+                spec["scenario"] = _os.path.abspath(spec["scenario"])
             folder = scratch
             if out is not None:
-                folder = os.path.abspath(os.fspath(out))
-                os.makedirs(folder, exist_ok=True)
-            path = os.path.join(folder, "spec.json" if out is not None else "sweep.json")
+                folder = _os.path.abspath(_os.fspath(out))
+                _os.makedirs(folder, exist_ok=True)
+            path = _os.path.join(folder, "spec.json" if out is not None else "sweep.json")
             with open(path, "w") as f:
-                json.dump(spec, f)
+                _json.dump(spec, f)
         else:
-            path = os.fspath(spec)
-        rows = _covsim._sweep(path, os.fspath(out) if out is not None else
-                              os.path.join(scratch, "out"), int(jobs), bool(keep_series))
+            path = _os.fspath(spec)
+        try:
+            rows = _covsim._sweep(path, _os.fspath(out) if out is not None else
+                                  _os.path.join(scratch, "out"), int(jobs), bool(keep_series))
+        except ScenarioError as e:
+            if path.startswith(scratch):
+                # The spec object was written to a scratch file the user never saw: name the
+                # call instead.
+                raise _renamed(e, path, "sweep(spec)") from None
+            raise
     try:
         import pandas
     except ImportError:
@@ -165,35 +196,35 @@ class Run:
     def path(self, robot):
         """Robot's positions over time, an (m, 2) array [m]."""
         rows = self.trajectory["robot"] == robot
-        return np.column_stack([self.trajectory["x"][rows], self.trajectory["y"][rows]])
+        return _np.column_stack([self.trajectory["x"][rows], self.trajectory["y"][rows]])
 
     def virtual_path(self, robot):
         rows = self.trajectory["robot"] == robot
-        return np.column_stack([self.trajectory["vx"][rows], self.trajectory["vy"][rows]])
+        return _np.column_stack([self.trajectory["vx"][rows], self.trajectory["vy"][rows]])
 
 
 def _columns(path):
-    opener = gzip.open if path.endswith(".gz") else open
+    opener = _gzip.open if path.endswith(".gz") else open
     with opener(path, "rt", newline="") as f:
-        reader = csv.reader(f)
+        reader = _csv.reader(f)
         header = next(reader)
         rows = [[float(v) for v in row] for row in reader]
-    data = np.array(rows, dtype=float).reshape(len(rows), len(header))
+    data = _np.array(rows, dtype=float).reshape(len(rows), len(header))
     out = {}
     for k, name in enumerate(header):
         column = data[:, k]
-        out[name] = column.astype(np.int64) if name == "robot" else column
+        out[name] = column.astype(_np.int64) if name == "robot" else column
     return out
 
 
 def _trajectory_file(folder):
     """The trajectory file of a run folder: trajectory.csv, or trajectory.csv.gz when the run
     was compressed (pandas.read_csv and numpy.loadtxt read either)."""
-    folder = os.fspath(folder)
-    plain = os.path.join(folder, "trajectory.csv")
+    folder = _os.fspath(folder)
+    plain = _os.path.join(folder, "trajectory.csv")
     compressed = plain + ".gz"
-    if os.path.exists(compressed):
-        if os.path.exists(plain):
+    if _os.path.exists(compressed):
+        if _os.path.exists(plain):
             raise ValueError(f"{folder}: holds both trajectory.csv and trajectory.csv.gz; "
                              "remove the one not of this run")
         return compressed
@@ -203,10 +234,10 @@ def _trajectory_file(folder):
 def load_run(folder):
     """Reads a run folder (final.json, scenario.json, trajectory.csv or trajectory.csv.gz,
     metrics.csv)."""
-    folder = os.fspath(folder)
-    with open(os.path.join(folder, "final.json")) as f:
-        final = json.load(f)
-    with open(os.path.join(folder, "scenario.json")) as f:
-        scenario = json.load(f)
+    folder = _os.fspath(folder)
+    with open(_os.path.join(folder, "final.json")) as f:
+        final = _json.load(f)
+    with open(_os.path.join(folder, "scenario.json")) as f:
+        scenario = _json.load(f)
     return Run(final, scenario, _columns(_trajectory_file(folder)),
-               _columns(os.path.join(folder, "metrics.csv")))
+               _columns(_os.path.join(folder, "metrics.csv")))

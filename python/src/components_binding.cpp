@@ -34,6 +34,12 @@ ParamSchema schema_of(const py::dict& params) {
     if (py::isinstance<py::bool_>(value)) {
       out.push_back(ParamSpec::boolean(name, "").defaults_to(value.cast<bool>()));
     } else if (py::isinstance<py::int_>(value)) {
+      // Whole-number parameters are counts (0 and up); a negative default means a number.
+      if (value.cast<py::int_>() < py::int_(0)) {
+        throw py::value_error("parameter \"" + name + "\": an int default must be 0 or more " +
+                              "(int parameters are counts); give a float for a number that " +
+                              "may be negative");
+      }
       out.push_back(ParamSpec::integer(name, "", "").defaults_to(value.cast<std::uint64_t>()));
     } else if (py::isinstance<py::float_>(value)) {
       out.push_back(ParamSpec::number(name, "", "").defaults_to(value.cast<double>()));
@@ -47,9 +53,15 @@ ParamSchema schema_of(const py::dict& params) {
   return out;
 }
 
+std::string type_name(const py::handle& o) {
+  return py::str(py::type::of(o).attr("__name__")).cast<std::string>();
+}
+
 py::dict params_dict(const Params& p) {
   py::dict d;
-  for (const auto& [name, value] : p.values()) {
+  for (const auto& entry : p.values()) {
+    // Named, not a structured binding: clang 14 cannot capture those in the lambda below.
+    const std::string& name = entry.first;
     std::visit(
         [&](const auto& x) {
           using T = std::decay_t<decltype(x)>;
@@ -62,7 +74,7 @@ py::dict params_dict(const Params& p) {
             d[name.c_str()] = to_array(x);
           }
         },
-        value);
+        entry.second);
   }
   return d;
 }
@@ -96,13 +108,23 @@ class PyPlanner final : public Planner {
   }
   PlanStep step(const SensorReading& reading, double max_step) override {
     py::gil_scoped_acquire gil;
-    const py::tuple t = obj_->attr("step")(PyReading(reading), max_step);
-    if (t.size() != 2) throw py::value_error("a planner's step must return (next, status)");
-    const Vec2 next = to_point(t[0]);
+    const py::object returned = obj_->attr("step")(PyReading(reading), max_step);
+    if (!py::isinstance<py::tuple>(returned) && !py::isinstance<py::list>(returned))
+      throw py::type_error("step must return (next, status), found " + type_name(returned));
+    const py::sequence t = returned;
+    if (t.size() != 2)
+      throw py::value_error("step must return (next, status), found " + std::to_string(t.size()) +
+                            " values");
+    Vec2 next;
+    try {
+      next = to_point(t[0]);
+    } catch (const std::exception& e) {
+      throw py::value_error(std::string("step's next must be a point (x, y): ") + e.what());
+    }
     try {
       return PlanStep{next, status_named(t[1].cast<std::string>())};
     } catch (const std::invalid_argument& e) {
-      throw py::value_error(std::string("a planner's status: ") + e.what());
+      throw py::value_error(std::string("step's status: ") + e.what());
     }
   }
 
@@ -131,11 +153,12 @@ PyRobot robot_view(const Robot& r) {
                  r.path_length};
 }
 
-// What robot i knows, for the duration of one call of a Python law.
+// What robot i knows at one call of a Python law: its points copied, so that Python may keep
+// the object; own_cell needs the live knowledge and is refused after the call.
 struct PyKnowledge {
   std::vector<Vec2> points;
   std::size_t self = 0;
-  const Knowledge* live = nullptr;  // valid only during the call
+  const Knowledge* live = nullptr;  // set during the call only
   const CellIntegrator* integrator = nullptr;
 };
 
@@ -147,11 +170,20 @@ class PyLaw final : public CoverageLaw {
   bool moves_virtual_generators() const override { return moves_; }
   Vec2 target(const Robot& robot, const Knowledge& k) override {
     py::gil_scoped_acquire gil;
-    PyKnowledge view{k.points, k.self, &k, &integrator_};
-    const py::object knowledge = py::cast(&view, py::return_value_policy::reference);
-    const py::object out = obj_->attr("target")(robot_view(robot), knowledge);
-    view.live = nullptr;
-    return to_point(out);
+    const auto view =
+        std::make_shared<PyKnowledge>(PyKnowledge{k.points, k.self, &k, &integrator_});
+    struct Expire {
+      PyKnowledge& view;
+      ~Expire() { view.live = nullptr; }
+    } expire{*view};
+    const py::object out = obj_->attr("target")(robot_view(robot), py::cast(view));
+    try {
+      return to_point(out);
+    } catch (const py::error_already_set&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw py::value_error(std::string("target must return a point (x, y): ") + e.what());
+    }
   }
   bool at_rest(const Robot& robot, const Tolerances& t) const override {
     py::gil_scoped_acquire gil;
@@ -242,8 +274,9 @@ void bind_components(py::module_& m) {
       .def_readonly("status", &PyRobot::status)
       .def_readonly("projected", &PyRobot::projected)
       .def_readonly("path_length", &PyRobot::path_length);
-  py::class_<PyKnowledge>(m, "Knowledge",
-                          "What a robot knows at its loop 1 (valid during the law's call).")
+  py::class_<PyKnowledge, std::shared_ptr<PyKnowledge>>(
+      m, "Knowledge",
+      "What a robot knows at its loop 1 (points may be kept; own_cell only during the call).")
       .def_property_readonly(
           "points", [](const PyKnowledge& k) { return to_array(k.points); },
           "The generators it knows, in robot-id order, (n, 2) [m].")
@@ -251,7 +284,10 @@ void bind_components(py::module_& m) {
       .def(
           "own_cell",
           [](const PyKnowledge& k) {
-            if (k.live == nullptr) throw py::value_error("this knowledge is no longer valid");
+            if (k.live == nullptr) {
+              throw std::runtime_error(
+                  "Knowledge.own_cell: only during the law's target call it was passed to");
+            }
             const CellSummary s = own_cell_summary(*k.integrator, *k.live);
             py::dict d;
             d["mass"] = s.mass;
@@ -269,10 +305,13 @@ void bind_components(py::module_& m) {
         e.name = name;
         e.description = description.empty() ? "a planner written in Python" : description;
         e.params = schema_of(params);
+        if (!PyCallable_Check(factory.ptr()))
+          throw py::type_error("register_planner(\"" + name +
+                               "\"): factory must be callable, found " + type_name(factory));
         const PyRef f = hold(std::move(factory));
         e.make = [f, name](const PlannerContext& ctx, const Params& p) -> PlannerSource {
-          // Borrowed: the environment outlives the run's planners.
-          const std::shared_ptr<const Environment> env(&ctx.environment, [](const Environment*) {});
+          // A copy per run: Python may keep the Environment after the run has ended.
+          const auto env = std::make_shared<const Environment>(ctx.environment);
           return [f, name, env, p] {
             py::gil_scoped_acquire gil;
             return std::make_unique<PyPlanner>(hold((*f)(PyEnvironment{env}, params_dict(p))),
@@ -304,10 +343,14 @@ void bind_components(py::module_& m) {
         e.name = name;
         e.description = description.empty() ? "a coverage law written in Python" : description;
         e.params = schema_of(params);
+        if (!PyCallable_Check(factory.ptr()))
+          throw py::type_error("register_law(\"" + name + "\"): factory must be callable, found " +
+                               type_name(factory));
         const PyRef f = hold(std::move(factory));
         e.make = [f, g, moves](const LawContext& ctx, const Params& p) {
           py::gil_scoped_acquire gil;
-          const std::shared_ptr<const Environment> env(&ctx.environment, [](const Environment*) {});
+          // A copy per run: Python may keep the Environment after the run has ended.
+          const auto env = std::make_shared<const Environment>(ctx.environment);
           return std::make_unique<PyLaw>(hold((*f)(PyEnvironment{env}, params_dict(p))), g, moves,
                                          ctx.integrator);
         };

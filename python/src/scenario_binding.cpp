@@ -48,10 +48,18 @@ PyScenario PyScenario::from_json(nlohmann::json j, const std::string& source,
 }
 
 void PyScenario::set(const std::string& path, const nlohmann::json& value) {
-  if (const std::string e = dotted_path_error(path); !e.empty()) throw py::value_error(e);
+  // Errors name the call, not the scenario's file, which was valid before it.
+  const std::string call = "set(\"" + path + "\", " + value.dump() + ")";
+  if (const std::string e = dotted_path_error(path); !e.empty())
+    throw py::value_error(call + ": " + e);
   nlohmann::json j = json;
-  set_dotted(j, path, value);
-  parsed = parse_scenario(j, parsed.source, base_dir);  // validated, or nothing changes
+  try {
+    set_dotted(j, path, value);
+    parsed = parse_scenario(j, parsed.source, base_dir);  // validated, or nothing changes
+  } catch (const ScenarioError& e) {
+    if (e.path().empty()) throw ScenarioError(call + ": " + e.what());
+    throw ScenarioError(call, e.path(), e.detail());
+  }
   json = std::move(j);
 }
 

@@ -4,6 +4,12 @@
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cmath>
+#include <thread>
+
 #include "analysis/records/result_fields.hpp"
 #include "core/fingerprint.hpp"
 #include "planners/tangent_bug.hpp"
@@ -34,7 +40,34 @@ class PySimulation {
       : scenario_(s), sim_(s.parsed, seed), observers_(this) {
     sim_.add_observer(&observers_);
   }
-  Simulation& sim() { return sim_; }
+  // The simulation to read, from the thread that may: any, while it is not running; only
+  // its own (observers, planners, laws) while it runs, since covsim runs without the GIL.
+  Simulation& sim(const char* call) {
+    if (running_ && std::this_thread::get_id() != runner_)
+      throw std::runtime_error(std::string("Simulation.") + call +
+                               ": the simulation is running in another thread; wait for it");
+    return sim_;
+  }
+  // Runs f (the GIL released) as the one run in progress: a second thread, or a call from
+  // inside the run (an observer, planner or law calling run), is refused.
+  template <class F>
+  auto run(const char* call, F&& f) {
+    if (running_) {
+      throw std::runtime_error(
+          std::string("Simulation.") + call +
+          (std::this_thread::get_id() == runner_
+               ? ": called from inside the simulation's own run (an observer, planner or law)"
+               : ": the simulation is running in another thread; wait for it"));
+    }
+    running_ = true;
+    runner_ = std::this_thread::get_id();
+    struct Done {
+      PySimulation* self;
+      ~Done() { self->running_ = false; }
+    } done{this};
+    py::gil_scoped_release release;
+    return f(sim_);
+  }
   const PyScenario& scenario() const { return scenario_; }
   void add_observer(py::object f) { observers_.callbacks.push_back(hold(std::move(f))); }
 
@@ -42,6 +75,8 @@ class PySimulation {
   PyScenario scenario_;
   Simulation sim_;
   PyObservers observers_;
+  std::atomic<bool> running_ = false;
+  std::thread::id runner_;
 };
 
 void PyObservers::on_sample(SimTime t, const CoverageController&) {
@@ -85,7 +120,7 @@ py::list cells_of(const CellIntegrator& integrator, const VoronoiPartition& p) {
 
 void bind_simulation(py::module_& m) {
   using R = const std::vector<Robot>&;
-  const auto robots = [](PySimulation& s) -> R { return s.sim().controller().robots(); };
+  const auto robots = [](PySimulation& s) -> R { return s.sim("robots").controller().robots(); };
   const auto points = [robots](Vec2 Robot::*member) {
     return [robots, member](PySimulation& s) {
       std::vector<Vec2> out;
@@ -112,39 +147,50 @@ void bind_simulation(py::module_& m) {
       .def(
           "step",
           [](PySimulation& s) {
-            py::gil_scoped_release release;
-            return s.sim().step();
+            return s.run("step()", [](Simulation& sim) { return sim.step(); });
           },
           "Dispatches one event; False once the run has ended.")
       .def(
           "run_until",
           [](PySimulation& s, double t) {
-            py::gil_scoped_release release;
-            s.sim().run_until(SimTime::from_seconds(t));
+            const std::string call = fmt::format("run_until({})", t);
+            const Simulation& sim = s.sim(call.c_str());
+            if (!std::isfinite(t)) throw py::value_error(call + ": expected a finite time [s]");
+            if (t < sim.now().seconds())
+              throw py::value_error(
+                  fmt::format("{}: that is before now, {} s", call, sim.now().seconds()));
+            s.run(call.c_str(), [t](Simulation& r) { r.run_until(SimTime::from_seconds(t)); });
           },
-          py::arg("t"), "Runs to simulated time t [s] (or to the end of the run, if sooner).")
+          py::arg("t"),
+          "Runs to simulated time t [s] (or to the end of the run, if sooner); a time before "
+          "now is a ValueError.")
       .def(
           "advance",
           [](PySimulation& s, double dt) {
-            if (!(dt >= 0.0)) throw py::value_error("advance: expected dt >= 0");
-            py::gil_scoped_release release;
-            s.sim().run_until(s.sim().now() + SimTime::from_seconds(dt));
+            const std::string call = fmt::format("advance({})", dt);
+            if (!(dt >= 0.0) || !std::isfinite(dt))
+              throw py::value_error(call + ": expected a finite dt >= 0 [s]");
+            if (s.sim(call.c_str()).finished())
+              throw py::value_error(call + ": the run has ended (" +
+                                    s.sim(call.c_str()).outcome().stop_reason +
+                                    "); make a new Simulation to run again");
+            s.run(call.c_str(),
+                  [dt](Simulation& r) { r.run_until(r.now() + SimTime::from_seconds(dt)); });
           },
-          py::arg("dt"), "Runs for dt more simulated seconds (or to the end of the run).")
+          py::arg("dt"),
+          "Runs for dt more simulated seconds (or to the end of the run); after the end, a "
+          "ValueError.")
       .def(
           "run",
           [](PySimulation& s) {
-            {
-              py::gil_scoped_release release;
-              s.sim().run();
-            }
-            return to_python(to_json_object(final_fields(), s.sim().outcome()));
+            s.run("run()", [](Simulation& sim) { sim.run(); });
+            return to_python(to_json_object(final_fields(), s.sim("run()").outcome()));
           },
           "Runs to the end; the outcome, as final.json (docs/outputs.md).")
       .def(
           "outcome",
           [](PySimulation& s) {
-            return to_python(to_json_object(final_fields(), s.sim().outcome()));
+            return to_python(to_json_object(final_fields(), s.sim("outcome()").outcome()));
           },
           "The outcome so far, as final.json would hold it (stop_reason 'running' before the "
           "end).")
@@ -153,14 +199,22 @@ void bind_simulation(py::module_& m) {
       .def(
           "set_target",
           [](PySimulation& s, std::uint32_t robot, const py::handle& target) {
-            s.sim().set_target(robot, to_point(target));
+            const Vec2 t = to_point(target);
+            const std::string call = fmt::format("set_target({}, ({}, {}))", robot, t.x, t.y);
+            if (!is_finite(t)) throw py::value_error(call + ": expected a finite point [m]");
+            Simulation& sim = s.sim(call.c_str());
+            try {
+              sim.set_target(robot, t);
+            } catch (const std::exception& e) {
+              throw py::value_error(call + ": " + e.what());
+            }
           },
           py::arg("robot"), py::arg("target"),
           "With the 'external' coverage law: robot's next target [m].")
       .def(
           "cells",
           [](PySimulation& s, const std::string& kind) {
-            const CoverageController& c = s.sim().controller();
+            const CoverageController& c = s.sim("cells()").controller();
             return cells_of(c.integrator(), partition(c, kind));
           },
           py::arg("kind") = "real",
@@ -170,19 +224,22 @@ void bind_simulation(py::module_& m) {
       .def(
           "cost",
           [](PySimulation& s, const std::string& kind) {
-            return partition(s.sim().controller(), kind).cost();
+            return partition(s.sim("cost()").controller(), kind).cost();
           },
           py::arg("kind") = "real", "H of the real positions or the virtual generators now.")
       .def_property_readonly("scenario", &PySimulation::scenario)
       .def_property_readonly(
-          "now", [](PySimulation& s) { return s.sim().now().seconds(); }, "Simulated time [s].")
-      .def_property_readonly("finished", [](PySimulation& s) { return s.sim().finished(); })
-      .def_property_readonly("events", [](PySimulation& s) { return s.sim().events(); })
+          "now", [](PySimulation& s) { return s.sim("now").now().seconds(); },
+          "Simulated time [s].")
+      .def_property_readonly("finished",
+                             [](PySimulation& s) { return s.sim("finished").finished(); })
+      .def_property_readonly("events", [](PySimulation& s) { return s.sim("events").events(); })
       .def_property_readonly(
-          "fingerprint", [](PySimulation& s) { return Fingerprint::to_hex(s.sim().fingerprint()); },
+          "fingerprint",
+          [](PySimulation& s) { return Fingerprint::to_hex(s.sim("fingerprint").fingerprint()); },
           "The run's fingerprint so far, 16 hex digits (as covsim run prints it at the end).")
-      .def_property_readonly("stop_reason",
-                             [](PySimulation& s) { return s.sim().outcome().stop_reason; })
+      .def_property_readonly(
+          "stop_reason", [](PySimulation& s) { return s.sim("stop_reason").outcome().stop_reason; })
       .def_property_readonly("positions", points(&Robot::position),
                              "Real generators, an (n, 2) array [m].")
       .def_property_readonly("virtual_generators", points(&Robot::virtual_generator),

@@ -42,10 +42,11 @@ def main(argv):
     if argv[0] == "example":
         script, out, figure, rest = argv[1], argv[2], argv[3], argv[4:]
         skip_unless(["numpy", "matplotlib", "pandas"])
-        os.makedirs(out, exist_ok=True)
+        # No folder beforehand: an example makes the one --out names.
+        import shutil
+
+        shutil.rmtree(out, ignore_errors=True)
         path = os.path.join(out, figure)
-        if os.path.exists(path):
-            os.remove(path)
         code = subprocess.call([sys.executable, script, "--out", out, *rest])
         if code != 0:
             return code
@@ -92,7 +93,14 @@ def pip_install(source, build):
     if fingerprint != expected:
         print(f"installed package: fingerprint {fingerprint}, covsim run: {expected}")
         return 1
-    print(f"pip-installed {where}: fingerprint {fingerprint}, as covsim run")
+    # pip installs the `covsim` command too, beside the venv's python.
+    command = os.path.join(venv, "bin", "covsim")
+    version = subprocess.run([command, "--version"], capture_output=True, text=True, env=env)
+    if version.returncode != 0 or "covsim" not in version.stdout:
+        print(f"{command} --version: exit {version.returncode}: {version.stdout}{version.stderr}")
+        return 1
+    print(f"pip-installed {where}: fingerprint {fingerprint}, as covsim run; "
+          f"{command} runs ({version.stdout.splitlines()[0]})")
     return 0
 
 
