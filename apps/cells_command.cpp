@@ -9,8 +9,10 @@
 #include "apps/commands.hpp"
 #include "geometry/geometry_error.hpp"
 #include "geometry/voronoi_partition.hpp"
+#include "scenarios/input_file.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
+#include "scenarios/scenario_error.hpp"
 
 namespace covsim::app {
 
@@ -25,19 +27,24 @@ void add_cells_command(CLI::App& app) {
   cmd->add_option("SCENARIO", opts->scenario,
                   "Scenario file (its environment and density are used)")
       ->required();
-  cmd->add_option("--generators", opts->generators, "JSON file holding an array [[x, y], ...]")
+  cmd->add_option("--generators", opts->generators,
+                  "JSON or YAML file holding an array [[x, y], ...]")
       ->required();
   cmd->callback([opts] {
     const Scenario scenario = load_scenario(opts->scenario);
-    const nlohmann::json gj = read_json_file(opts->generators);
-    const JsonValue list(gj, opts->generators);
-    std::vector<Vec2> generators = list.points();
+    const InputFile in = read_input(opts->generators);
+    const JsonValue list(in.json, in.source);
     const CellIntegrator integrator(*scenario.environment, *scenario.density);
     std::unique_ptr<VoronoiPartition> partition;
     try {
-      partition = std::make_unique<VoronoiPartition>(integrator, std::move(generators));
-    } catch (const GeometryError& e) {
-      list.fail(e.what());
+      std::vector<Vec2> generators = list.points();
+      try {
+        partition = std::make_unique<VoronoiPartition>(integrator, std::move(generators));
+      } catch (const GeometryError& e) {
+        list.fail(e.what());
+      }
+    } catch (const ScenarioError& e) {
+      throw in.located(e);
     }
     nlohmann::ordered_json out;
     out["cells"] = nlohmann::ordered_json::array();

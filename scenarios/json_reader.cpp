@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+
+#include "scenarios/input_file.hpp"
 
 namespace covsim {
 
@@ -125,14 +125,7 @@ nlohmann::json parse_json(const std::string& text, const std::string& source) {
 }
 
 nlohmann::json read_json_file(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    throw ScenarioError(file.string() + ": is a directory, not a JSON file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw ScenarioError(file.string() + ": cannot open file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_json(ss.str(), file.string());
+  return parse_json(read_text_file(file, "JSON"), file.string());
 }
 
 void JsonValue::fail(std::string_view what) const {

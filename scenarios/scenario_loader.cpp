@@ -11,6 +11,7 @@
 #include "geometry/ring_validation.hpp"
 #include "scenarios/component_reader.hpp"
 #include "scenarios/component_sections.hpp"
+#include "scenarios/input_file.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/section_reader.hpp"
@@ -346,7 +347,12 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
 }
 
 Scenario load_scenario(const std::filesystem::path& file) {
-  return parse_scenario(read_json_file(file), file.string(), file.parent_path());
+  const InputFile in = read_input(file);
+  try {
+    return parse_scenario(in.json, in.source, file.parent_path());
+  } catch (const ScenarioError& e) {
+    throw in.located(e);
+  }
 }
 
 bool draws_from_seed(const nlohmann::json& j) {

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <stdexcept>
 
+#include "scenarios/input_file.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario_error.hpp"
 
@@ -70,11 +71,12 @@ ScenarioOverride parse_override(std::string_view text, std::string_view option) 
 
 Scenario load_scenario(const std::filesystem::path& file,
                        const std::vector<ScenarioOverride>& overrides) {
-  nlohmann::json j = read_json_file(file);
+  InputFile in = read_input(file);
+  nlohmann::json& j = in.json;
   for (const ScenarioOverride& o : overrides)
     set_dotted(j, o.path, o.value);
   try {
-    return parse_scenario(j, file.string(), file.parent_path());
+    return parse_scenario(j, in.source, file.parent_path());
   } catch (const ScenarioError& e) {
     // The last override at, under or above the error's place is the one to blame.
     for (auto o = overrides.rbegin(); o != overrides.rend(); ++o) {
@@ -86,7 +88,7 @@ Scenario load_scenario(const std::filesystem::path& file,
       if (!e.path().empty() && (under(e.path(), at) || (e.path() != "$" && under(at, e.path()))))
         throw ScenarioError(o->as_typed + ": " + e.file(), e.path(), e.detail());
     }
-    throw;
+    throw in.located(e);  // the value is the file's own
   }
 }
 

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
+#include "scenarios/input_file.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/scenario_error.hpp"
@@ -14,17 +16,21 @@ namespace covsim {
 namespace {
 
 // Loads every setting's scenario once (with the first seed) before anything runs: a typo in a
-// path or a bad value is one error, at the value in the sweep file that caused it.
+// path or a bad value is one error, at the value in the sweep file that caused it. `sweep` is
+// the sweep file as read, `named` the scenario file it names (null for an inline scenario).
 void validate_settings(const SweepSpec& spec, const std::vector<std::string>& list_paths,
-                       std::size_t grid_parameters, std::size_t zip_rows) {
+                       std::size_t grid_parameters, std::size_t zip_rows, const InputFile& sweep,
+                       const InputFile* named) {
   const auto under = [](const std::string& a, const std::string& b) {
     return a.size() >= b.size() && a.compare(0, b.size(), b) == 0 &&
            (a.size() == b.size() || a[b.size()] == '.' || a[b.size()] == '[');
   };
+  const std::string inline_source = spec.source + " (the scenario)";
   for (std::size_t k = 0; k < spec.settings.size(); ++k) {
     const SweepRun run{0, k, spec.seeds.front(), spec.settings[k]};
     try {
-      parse_scenario(spec.scenario_for(run), spec.source + " (the scenario)", spec.scenario_dir);
+      parse_scenario(spec.scenario_for(run), named ? named->source : inline_source,
+                     spec.scenario_dir);
     } catch (const ScenarioError& e) {
       for (std::size_t p = spec.parameters.size(); p-- > 0;) {
         const std::string at = "$." + spec.parameters[p];
@@ -47,24 +53,30 @@ void validate_settings(const SweepSpec& spec, const std::vector<std::string>& li
             fmt::format("{} = {} gives an invalid scenario: {}: {}", spec.parameters[p],
                         spec.settings[k][p].dump(), e.path(), e.detail()));
       }
-      throw ScenarioError(spec.source, "$.scenario",
-                          fmt::format("the scenario is invalid: {}", e.what()));
+      if (named) {
+        throw ScenarioError(spec.source, "$.scenario",
+                            fmt::format("the scenario is invalid: {}", named->located(e).what()));
+      }
+      // An inline scenario's error is placed where its value is in the sweep file.
+      const bool inside = e.file() == inline_source && !e.path().empty();
+      throw ScenarioError(spec.source,
+                          sweep.place_of(inside ? "$.scenario" + e.path().substr(1) : "$.scenario"),
+                          "$.scenario", fmt::format("the scenario is invalid: {}", e.what()));
     }
   }
 }
 
-}  // namespace
-
-SweepSpec load_sweep(const std::filesystem::path& file) {
+SweepSpec read_sweep(const InputFile& in, const std::filesystem::path& file) {
   SweepSpec spec;
-  spec.source = file.string();
-  const nlohmann::json j = read_json_file(file);
-  const JsonValue root(j, spec.source);
+  spec.source = in.source;
+  const JsonValue root(in.json, spec.source);
   root.only_keys({"scenario", "grid", "zip", "seeds"});
   const JsonValue scenario = root.at("scenario");
+  std::optional<InputFile> named;
   if (scenario.raw().is_string()) {
     const std::filesystem::path path = file.parent_path() / scenario.string();
-    spec.scenario = read_json_file(path);
+    named = read_input(path);
+    spec.scenario = named->json;
     spec.scenario_dir = path.parent_path();
   } else if (scenario.raw().is_object()) {
     spec.scenario = scenario.raw();
@@ -170,8 +182,19 @@ SweepSpec load_sweep(const std::filesystem::path& file) {
     for (std::uint64_t s = 1; s <= n; ++s)
       spec.seeds.push_back(s);
   }
-  validate_settings(spec, list_paths, grid_parameters, zip_rows);
+  validate_settings(spec, list_paths, grid_parameters, zip_rows, in, named ? &*named : nullptr);
   return spec;
+}
+
+}  // namespace
+
+SweepSpec load_sweep(const std::filesystem::path& file) {
+  const InputFile in = read_input(file);
+  try {
+    return read_sweep(in, file);
+  } catch (const ScenarioError& e) {
+    throw in.located(e);
+  }
 }
 
 nlohmann::json to_json(const SweepSpec& spec) {

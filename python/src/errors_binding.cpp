@@ -16,6 +16,9 @@ void set_scenario_error(const ScenarioError& e) {
   py::object instance = py::reinterpret_borrow<py::object>(*scenario_error)(e.what());
   instance.attr("file") = e.file();
   instance.attr("path") = e.path();
+  const TextPlace place = e.place();
+  instance.attr("line") = place.known() ? py::object(py::int_(place.line)) : py::none();
+  instance.attr("column") = place.known() ? py::object(py::int_(place.column)) : py::none();
   PyErr_SetObject(scenario_error->ptr(), instance.ptr());
 }
 
@@ -46,8 +49,10 @@ void bind_errors(py::module_& m) {
   static py::exception<ScenarioError> error(m, "ScenarioError", PyExc_ValueError);
   scenario_error = &error;
   error.doc() =
-      "An invalid scenario: str(e) reads 'FILE: $.json.path: what was expected'; e.file and "
-      "e.path hold the file and the JSON path apart (path is '' where there is none).";
+      "An invalid scenario: str(e) reads 'FILE: $.json.path: what was expected' (with "
+      "':LINE:COLUMN' after FILE where the value's place is known: YAML files); e.file and "
+      "e.path hold the file and the JSON path apart (path is '' where there is none), e.line "
+      "and e.column the place (None where unknown).";
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

@@ -4,7 +4,8 @@
 
 #include <pybind11/stl/filesystem.h>
 
-#include "scenarios/json_reader.hpp"
+#include "scenarios/input_file.hpp"
+#include "scenarios/scenario_error.hpp"
 #include "scenarios/scenario_override.hpp"
 
 namespace covsim::python {
@@ -31,10 +32,15 @@ py::object to_python(const nlohmann::ordered_json& j) {
 }
 
 PyScenario PyScenario::from_file(const std::filesystem::path& path) {
+  InputFile in = read_input(path);
   PyScenario s;
-  s.json = read_json_file(path);
   s.base_dir = path.parent_path();
-  s.parsed = parse_scenario(s.json, path.string(), s.base_dir);
+  try {
+    s.parsed = parse_scenario(in.json, in.source, s.base_dir);
+  } catch (const ScenarioError& e) {
+    throw in.located(e);
+  }
+  s.json = std::move(in.json);
   return s;
 }
 
@@ -67,8 +73,10 @@ void bind_scenario(py::module_& m) {
   py::class_<PyScenario>(m, "Scenario",
                          "A scenario, validated as `covsim run` validates it "
                          "(docs/scenario-format.md).")
-      .def_static("from_file", &PyScenario::from_file, py::arg("path"),
-                  "Reads a scenario file; files it names are relative to it.")
+      .def_static(
+          "from_file", &PyScenario::from_file, py::arg("path"),
+          "Reads a scenario file (YAML for a name ending in .yaml or .yml, JSON otherwise); "
+          "files it names are relative to it.")
       .def_static(
           "from_dict",
           [](const py::dict& d, const std::filesystem::path& base_dir) {

@@ -27,7 +27,28 @@ def test_errors_name_the_file_and_json_path(scenarios, tmp_path):
         covsim.Scenario.from_file(bad)
     assert e.value.file == str(bad)
     assert e.value.path == "$.robotz"
+    assert e.value.line is None  # JSON values carry no place
     assert isinstance(e.value, ValueError)
+
+
+def test_from_file_reads_yaml_as_its_json_twin(scenarios, tmp_path):
+    y = covsim.Scenario.from_file(scenarios / "u_shape.yaml")
+    j = covsim.Scenario.from_file(scenarios / "u_shape.json")
+    assert y.to_dict() == j.to_dict()
+    assert (y.robots == j.robots).all()
+    assert covsim.Simulation(y).run()["fingerprint"] == covsim.Simulation(j).run()["fingerprint"]
+    bad = tmp_path / "bad.yml"
+    bad.write_text("environment:\n  outer: [[0, 0], [1, 0], [1, 1]]\nrobotz: 1\n")
+    with pytest.raises(covsim.ScenarioError) as e:
+        covsim.Scenario.from_file(bad)
+    assert e.value.file == str(bad)
+    assert e.value.path == "$.robotz"
+    assert (e.value.line, e.value.column) == (3, 9)
+    assert str(e.value).startswith(f"{bad}:3:9: $.robotz: unknown key")
+    bad.write_text("environment: {outer: [[0, 0], [1, 0], [1, .nan]]}\n")
+    with pytest.raises(covsim.ScenarioError) as e:
+        covsim.Scenario.from_file(bad)
+    assert str(e.value).startswith(f"{bad}:1:43: $.environment.outer[2][1]: expected a finite")
 
 
 def test_set_changes_a_dotted_path_and_validates(scenarios):

@@ -239,6 +239,67 @@ TEST_CASE("sweep files are validated", "[sweep]") {
         "$.zip: rows 0 and 2 are the same setting");
 }
 
+TEST_CASE("a YAML sweep reads and runs as its JSON twin, and its errors have places",
+          "[sweep][yaml]") {
+  const fs::path dir = temp_dir("yaml");
+  const std::string source = COVSIM_SOURCE_DIR;
+  const SweepSpec json = load_sweep(write_sweep(dir, R"({"scenario": ")" + source +
+                                                         R"(/scenarios/u_shape.json",
+      "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.0, 0.4]},
+      "seeds": [3]})"));
+  const auto yaml_file = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  };
+  const SweepSpec yaml = load_sweep(yaml_file("sweep.yaml", "scenario: " + source +
+                                                                R"(/scenarios/u_shape.yaml
+grid:  # the same grid
+  network.loss.model: [bernoulli]
+  network.loss.p:
+    - 0.0
+    - 0.4
+seeds: [3]
+)"));
+  nlohmann::json a = to_json(json), b = to_json(yaml);
+  a.erase("source");
+  b.erase("source");
+  CHECK(a.dump() == b.dump());
+  CHECK(comparable(run_sweep(yaml, dir / "yaml-out", SweepOptions{2, false, 0, 1})) ==
+        comparable(run_sweep(json, dir / "json-out", SweepOptions{2, false, 0, 1})));
+
+  const auto error = [&](const std::string& text) {
+    try {
+      load_sweep(yaml_file("bad.yaml", text));
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    FAIL("accepted: " << text);
+    return std::string();
+  };
+  const std::string named = "scenario: " + source + "/scenarios/u_shape.yaml\n";
+  CHECK_THAT(error(named + "grid:\n  network.loss.model: [bernoulli]\n  network.loss.p: [0.1, 2]\n"
+                           "seeds: [1]\n"),
+             Catch::Contains("bad.yaml:4:25: $.grid.network.loss.p[1]: network.loss.p = 2 gives "
+                             "an invalid scenario: $.network.loss.p: expected a number"));
+  CHECK_THAT(error(named + "seeds: [1, 2]\nseeds: [3]\n"),
+             Catch::Contains("bad.yaml:3:1: $: duplicate key \"seeds\""));
+  CHECK_THAT(error(named + "seeds: {count: 0}\n"),
+             Catch::Contains("bad.yaml:2:16: $.seeds.count: expected a count"));
+  // An inline scenario's error is placed at the value in the sweep file.
+  CHECK_THAT(error("scenario:\n  environment: {outer: [[0, 0], [1, 0], [1, 1]]}\n"
+                   "  density: {type: uniform}\n  robots: {positions: [[0.9, 0.1]], colour: 2}\n"
+                   "seeds: [1]\n"),
+             Catch::Contains("bad.yaml:4:45: $.scenario: the scenario is invalid: ") &&
+                 Catch::Contains("$.robots.colour: unknown key"));
+  // A scenario file's error names that file and the place in it.
+  yaml_file("scenario.yaml",
+            "environment: {outer: [[0, 0], [1, 0], [1, 1]]}\n"
+            "density: {type: uniform, value: -1}\n");
+  CHECK_THAT(error("scenario: scenario.yaml\nseeds: [1]\n"),
+             Catch::Contains("bad.yaml:1:11: $.scenario: the scenario is invalid: ") &&
+                 Catch::Contains("scenario.yaml:2:33: $.density.value: expected a number > 0"));
+}
+
 TEST_CASE("shards plus merge equal the whole sweep", "[sweep]") {
   const fs::path dir = temp_dir("merge");
   const SweepSpec spec = load_sweep(write_sweep(dir, kSweep));
