@@ -15,7 +15,7 @@ namespace covsim {
 // This build's provenance as a JSON object (keys version, commit, dirty, compiler,
 // build_type, flags).
 nlohmann::ordered_json this_build();
-// One line: "covsim 0.2.0 (commit a49cd7c5b149, dirty; GNU 12.2.0, Release; -O2 ...)".
+// One line: "covsim 0.3.0 (commit a49cd7c5b149, dirty; GNU 12.2.0, Release; -O2 ...)".
 std::string describe_build(const nlohmann::json& provenance);
 // What differs between a recorded provenance and this build, one line per key ("commit: X
 // then, Y now"); empty when nothing does (two dirty builds of one commit may still differ).
