@@ -1,4 +1,7 @@
 // covsim: the command-line front end. Exit codes: 0 success, 1 a run failed, 2 bad input.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 
@@ -9,6 +12,22 @@
 #include "io/interrupt.hpp"
 #include "scenarios/scenario_error.hpp"
 #include "sim/provenance.hpp"
+
+namespace {
+
+// What a command printed reached standard output: a full disk or a closed pipe behind it is a
+// failed command (exit 1), not a silent loss.
+int standard_output_written() {
+  std::cout.flush();
+  errno = 0;
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout) && std::cout) return 0;
+  const int error = errno;
+  std::cerr << "covsim: cannot write to standard output"
+            << (error != 0 ? std::string(": ") + std::strerror(error) : std::string()) << '\n';
+  return 1;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"covsim: discrete-event simulation of multi-robot Voronoi coverage"};
@@ -51,5 +70,5 @@ int main(int argc, char** argv) {
     std::cerr << "covsim: " << e.what() << '\n';
     return 1;
   }
-  return 0;
+  return standard_output_written();
 }

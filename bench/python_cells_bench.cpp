@@ -24,7 +24,7 @@ void BM_Cells(benchmark::State& state) {
   const CellIntegrator integrator(env, density);
   const auto points = bench::random_points_in(env, size_of(state), 1);
   for (auto _ : state) {
-    VoronoiPartition p(integrator, points, VoronoiPartition::Coincident::split);
+    VoronoiPartition p(integrator, points, VoronoiPartition::Coincident::reject);
     std::vector<CellSummary> summaries;
     summaries.reserve(p.size());
     for (std::size_t i = 0; i < p.size(); ++i)

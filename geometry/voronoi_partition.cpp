@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <tuple>
@@ -10,11 +11,35 @@
 
 #include "geometry/coincident_wedge.hpp"
 #include "geometry/delaunay.hpp"
+#include "geometry/geometry_error.hpp"
 
 namespace covsim {
 
 namespace {
 using Coincidence = VoronoiPartition::Coincidence;
+
+// A cell's moments are taken about its generator, so a generator far from Ω loses the digits
+// of its cell's mass to cancellation, about (distance / size)² × 1e-16 of it: within 100
+// sizes of the integrator's box, at most 1e-12. Farther is refused: no run moves a generator
+// there (Lloyd keeps them in Ω's convex hull), and a query there would get a wrong answer.
+constexpr double kGeneratorReach = 100.0;
+
+std::vector<Vec2> within_reach(const CellIntegrator& integrator, std::vector<Vec2> generators) {
+  const Box& box = integrator.clip_box();
+  const double size = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y);
+  const double reach = kGeneratorReach * size;
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    const Vec2 g = generators[i];
+    if (!std::isfinite(g.x) || !std::isfinite(g.y)) continue;  // the triangulation names it
+    if (g.x < box.lo.x - reach || g.x > box.hi.x + reach || g.y < box.lo.y - reach ||
+        g.y > box.hi.y + reach)
+      throw GeometryError(fmt::format(
+          "generator {} at ({:g}, {:g}) is more than {:g} m ({:g} times Ω's size) outside Ω's "
+          "bounding box, where its cell's moments cannot be computed to double precision",
+          i, g.x, g.y, reach, kGeneratorReach));
+  }
+  return generators;
+}
 
 Coincidence coincidence(std::span<const Vec2> g) {
   const std::size_t n = g.size();
@@ -67,7 +92,7 @@ void cell_of(const CellIntegrator& integrator, const Coincidence& c, const Delau
 VoronoiPartition::VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
                                    Coincident coincident)
     : integrator_(integrator),
-      generators_(std::move(generators)),
+      generators_(within_reach(integrator, std::move(generators))),
       coincidence_(coincidence(generators_)),
       // Rejecting, the triangulation of all the generators names any coincident pair.
       neighbors_(delaunay_neighbors(coincident == Coincident::reject ? generators_

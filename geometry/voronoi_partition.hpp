@@ -21,7 +21,8 @@ class VoronoiPartition {
     split,   // equal generators split their cell into wedges, in index order (clip_to_wedge)
   };
   // Cells from the generators' Delaunay neighbours. Throws GeometryError for non-finite
-  // generators, and for coincident ones unless told to split.
+  // generators, for generators more than 100 times the integrator's box size outside it,
+  // and for coincident ones unless told to split.
   VoronoiPartition(const CellIntegrator& integrator, std::vector<Vec2> generators,
                    Coincident coincident = Coincident::reject);
   // The same, keeping the cells `previous` has computed whose generator, place among

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <mutex>
 #include <optional>
+#include <system_error>
 #include <thread>
 
 #include "analysis/records/result_fields.hpp"
@@ -140,17 +141,44 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
       results[k] = std::move(r);
       ++finished;
       failed += results[k].error ? 1 : 0;
-      progress.report(finished, failed);
+      try {
+        progress.report(finished, failed);
+      } catch (...) {
+        // stderr closed or full: the progress line is lost, not the sweep
+      }
+    }
+  };
+  // Anything else a worker meets (memory, say) stops the others and is the sweep's error,
+  // raised once every thread has ended.
+  std::exception_ptr failure;
+  auto guarded_worker = [&] {
+    try {
+      worker();
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!failure) failure = std::current_exception();
+      next = todo.size();
     }
   };
   std::vector<std::thread> threads;
-  for (std::size_t j = 1; j < std::max<std::size_t>(1, options.jobs); ++j)
-    threads.emplace_back(worker);
-  worker();
+  // No more threads than runs to do: a large --jobs on a small sweep costs nothing.
+  const std::size_t workers = std::min(std::max<std::size_t>(1, options.jobs), todo.size());
+  for (std::size_t j = 1; j < workers; ++j) {
+    try {
+      threads.emplace_back(guarded_worker);
+    } catch (const std::system_error&) {
+      break;  // the system gives no more threads: the runs go on in those there are
+    }
+  }
+  guarded_worker();
   for (auto& t : threads)
     t.join();
-  progress.finish();
+  try {
+    progress.finish();
+  } catch (...) {
+  }
   if (interrupted) std::rethrow_exception(interrupted);
+  if (failure) std::rethrow_exception(failure);
   return results;
 }
 

@@ -112,6 +112,11 @@ SweepSpec read_sweep(const InputFile& in, const std::filesystem::path& file) {
       check_key(values, key);
       if (values.size() == 0) values.fail("expected at least one value");
       no_repeats(values);
+      if (settings.size() > kMaxSweepRuns / values.size())  // refused before it is built
+        values.fail(
+            fmt::format("the grid would have more than {} settings (a sweep holds at "
+                        "most {} runs)",
+                        kMaxSweepRuns, kMaxSweepRuns));
       spec.parameters.push_back(key);
       list_paths.push_back(values.path());
       std::vector<std::vector<nlohmann::json>> next;
@@ -150,6 +155,11 @@ SweepSpec read_sweep(const InputFile& in, const std::filesystem::path& file) {
       }
     }
     zip_rows = columns.empty() ? 0 : rows;
+    if (rows != 0 && settings.size() > kMaxSweepRuns / rows)
+      zip->fail(
+          fmt::format("grid and zip would have more than {} settings (a sweep holds at "
+                      "most {} runs)",
+                      kMaxSweepRuns, kMaxSweepRuns));
     if (!columns.empty()) {
       std::vector<std::vector<nlohmann::json>> next;
       for (const auto& s : settings) {
@@ -178,10 +188,14 @@ SweepSpec read_sweep(const InputFile& in, const std::filesystem::path& file) {
   } else {
     seeds.only_keys({"count"});
     const std::uint64_t n = seeds.at("count").unsigned_integer();
-    if (n == 0 || n > 1'000'000) seeds.at("count").fail("expected a count between 1 and 1000000");
+    if (n == 0 || n > kMaxSweepRuns)
+      seeds.at("count").fail(fmt::format("expected a count between 1 and {}", kMaxSweepRuns));
     for (std::uint64_t s = 1; s <= n; ++s)
       spec.seeds.push_back(s);
   }
+  if (spec.settings.size() > kMaxSweepRuns / spec.seeds.size())
+    seeds.fail(fmt::format("{} settings × {} seeds is more than the {} runs a sweep holds",
+                           spec.settings.size(), spec.seeds.size(), kMaxSweepRuns));
   validate_settings(spec, list_paths, grid_parameters, zip_rows, in, named ? &*named : nullptr);
   return spec;
 }

@@ -18,6 +18,10 @@ struct SweepRun {
   std::vector<nlohmann::json> values;  // one per parameter, in SweepSpec::parameters order
 };
 
+// The most runs (settings × seeds) a sweep may hold: a larger grid is refused when read,
+// before anything is built for it.
+inline constexpr std::size_t kMaxSweepRuns = 1'000'000;
+
 struct SweepSpec {
   std::string source;
   nlohmann::json scenario;                            // the base scenario

@@ -10,6 +10,7 @@ run folders, and planners and coverage laws written in Python. See docs/python.m
 import csv as _csv
 import gzip as _gzip
 import json as _json
+import operator as _operator
 import os as _os
 import tempfile as _tempfile
 
@@ -148,6 +149,14 @@ def sweep(spec, jobs=1, out=None, keep_series=False):
     value). Results do not depend on jobs. A rerun into the same out reuses every finished run
     (docs/sweeps.md), as `covsim sweep` does: a spec object is kept as out/spec.json, so that
     the sweep file of both calls is the same."""
+    try:
+        count = None if isinstance(jobs, bool) else _operator.index(jobs)
+    except TypeError:
+        count = None
+    if count is None or not 1 <= count <= 1024:
+        raise ValueError(f"sweep(jobs={jobs!r}): expected an integer from 1 to 1024, as "
+                         "covsim sweep --jobs")
+    jobs = count
     with _tempfile.TemporaryDirectory(prefix="covsim-sweep-") as scratch:
         if isinstance(spec, dict):
             spec = dict(spec)

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "geometry/cell_integrator.hpp"
+#include "geometry/geometry_error.hpp"
 #include "geometry/voronoi_partition.hpp"
 #include "geometry_binding.hpp"
 #include "scenario_binding.hpp"
@@ -35,7 +36,8 @@ struct PyPartition {
 
   PyPartition(std::shared_ptr<const PyCells> c, std::vector<Vec2> generators)
       : cells(std::move(c)),
-        partition(*cells->integrator, std::move(generators), VoronoiPartition::Coincident::split) {
+        // Coincident generators refused, as `covsim cells` refuses them.
+        partition(*cells->integrator, std::move(generators), VoronoiPartition::Coincident::reject) {
     summaries.reserve(partition.size());
     for (std::size_t i = 0; i < partition.size(); ++i)
       summaries.push_back(partition.summary(i));
@@ -149,8 +151,12 @@ void bind_geometry(py::module_& m) {
           "__call__",
           [](const std::shared_ptr<PyCells>& c, const py::handle& generators) {
             std::vector<Vec2> g = to_points(generators);
-            py::gil_scoped_release release;
-            return std::make_unique<PyPartition>(c, std::move(g));
+            try {
+              py::gil_scoped_release release;
+              return std::make_unique<PyPartition>(c, std::move(g));
+            } catch (const GeometryError& e) {
+              throw py::value_error(std::string("cells(generators): ") + e.what());
+            }
           },
           py::arg("generators"))
       .def_property_readonly(

@@ -176,6 +176,23 @@ def test_bad_registrations_and_targets_are_refused():
 
 
 def test_the_package_exports_only_its_own_names():
-    for stray in ("np", "os", "json", "tempfile", "csv", "gzip"):
+    for stray in ("np", "os", "json", "tempfile", "csv", "gzip", "operator"):
         assert not hasattr(covsim, stray)
     assert all(hasattr(covsim, name) for name in covsim.__all__)
+
+
+def test_cells_refuse_coincident_and_far_generators_as_the_command_does():
+    cells = covsim.Cells(room())
+    with pytest.raises(ValueError, match=r"cells\(generators\): .*coincide"):
+        cells([[0.5, 0.5], [0.2, 0.2], [0.5, 0.5]])
+    with pytest.raises(ValueError, match=r"cells\(generators\): generator 1 at \(1e\+07, 1e\+07\)"):
+        cells([[0.5, 0.5], [1e7, 1e7]])
+    # Outside Ω but within reach: the whole of Ω's mass, to the last bits.
+    far = cells([[2.0, 2.0]])
+    assert far.mass[0] == pytest.approx(cells.total_mass, rel=1e-12)
+
+
+def test_sweep_jobs_out_of_range_are_value_errors():
+    for jobs in (0, -1, 10**9, 2.5, True):
+        with pytest.raises(ValueError, match=r"sweep\(jobs="):
+            covsim.sweep({"scenario": {}, "seeds": [1]}, jobs=jobs)

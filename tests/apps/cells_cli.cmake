@@ -43,3 +43,20 @@ execute_process(COMMAND ${COVSIM} cells ${WORK}/missing.json --generators ${WORK
 if(NOT rc EQUAL 2 OR NOT err MATCHES "missing.json: cannot open")
   message(FATAL_ERROR "missing scenario: expected exit 2, got ${rc}: ${err}")
 endif()
+# A generator so far from Ω that its cell's moments would lose their digits: refused, not a
+# mass larger than Ω's.
+file(WRITE ${WORK}/far.json "[[1e7, 1e7]]")
+execute_process(COMMAND ${COVSIM} cells ${WORK}/ring.json --generators ${WORK}/far.json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "far.json: \\$: generator 0 at \\(1e\\+07, 1e\\+07\\) is more than"
+   OR NOT out STREQUAL "")
+  message(FATAL_ERROR "a far generator: expected exit 2 naming it, got ${rc}: ${err} ${out}")
+endif()
+# Output that cannot be written (a full disk) is a failure naming standard output.
+if(EXISTS /dev/full)
+  execute_process(COMMAND ${COVSIM} cells ${WORK}/ring.json --generators ${WORK}/gens.json
+                  OUTPUT_FILE /dev/full RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 1 OR NOT err MATCHES "cannot write to standard output")
+    message(FATAL_ERROR "cells > /dev/full: expected exit 1 naming standard output, got ${rc}: ${err}")
+  endif()
+endif()

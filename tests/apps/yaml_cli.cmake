@@ -41,6 +41,18 @@ if(NOT n EQUAL 7 OR NOT rows MATCHES "network.loss.p")
   message(FATAL_ERROR "the YAML sweep's runs.csv: ${rows}")
 endif()
 
+# The same sweep with its progress lines going to a full disk: lost lines, not a lost sweep.
+if(EXISTS /dev/full)
+  execute_process(COMMAND ${COVSIM} sweep ${SOURCE}/examples/sweeps/u_shape_loss.yaml
+                          --out ${WORK}/sweep-full --jobs 2
+                  RESULT_VARIABLE rc OUTPUT_QUIET ERROR_FILE /dev/full)
+  file(STRINGS ${WORK}/sweep-full/runs.csv full_rows)
+  list(LENGTH full_rows n)
+  if(NOT rc EQUAL 0 OR NOT n EQUAL 7)
+    message(FATAL_ERROR "sweep with stderr on /dev/full: exit ${rc}, ${n} rows in runs.csv")
+  endif()
+endif()
+
 # Generators in YAML.
 file(WRITE ${WORK}/gens.yaml "# two generators\n- [0.2, 0.2]\n- [0.8, 0.2]\n")
 run_ok(cells cells ${SOURCE}/scenarios/u_shape.yaml --generators ${WORK}/gens.yaml)

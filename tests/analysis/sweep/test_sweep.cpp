@@ -215,6 +215,20 @@ TEST_CASE("sweep files are validated", "[sweep]") {
         "$.grid.a: expected at least one value");
   error("{" + scenario + R"(, "seeds": {"count": 0}})", "$.seeds.count: expected a count");
   error("{" + scenario + "}", "missing required key \"seeds\"");
+  // Sizes that cannot be honoured are refused when read, before the grid is built: 100^4
+  // settings from a few kilobytes, or a million settings times two seeds.
+  std::string hundred = "[";
+  for (int v = 0; v < 100; ++v)
+    hundred += (v != 0 ? ", " : "") + std::to_string(v * 0.001 + 0.1);
+  hundred += "]";
+  error("{" + scenario + R"(, "grid": {"sensor.range": )" + hundred +
+            R"(, "loops.loop2_period": )" + hundred + R"(, "network.loss.p": )" + hundred +
+            R"(, "network.broadcast_period": )" + hundred + R"(}, "seeds": [1]})",
+        "$.grid.sensor.range: the grid would have more than 1000000 settings");
+  error("{" + scenario + R"(, "grid": {"sensor.range": )" + hundred +
+            R"(, "loops.loop2_period": )" + hundred + R"(, "network.loss.p": )" + hundred +
+            R"(}, "seeds": {"count": 2}})",
+        "$.seeds: 1000000 settings × 2 seeds is more than the 1000000 runs a sweep holds");
   error(R"({"scenario": 3, "seeds": [1]})", "$.scenario: expected a scenario file name");
   // Every setting's scenario is loaded before anything runs; the error names the value.
   error("{" + scenario +
