@@ -13,6 +13,7 @@
 #include "analysis/figures/run_video.hpp"
 #include "analysis/records/run_files.hpp"
 #include "apps/commands.hpp"
+#include "apps/figure_options.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
 #include "io/atomic_file.hpp"
@@ -43,44 +44,29 @@ std::vector<T> number_list(const std::string& text, const std::string& option,
 
 void add_plot_command(CLI::App& app) {
   struct Options {
-    std::string dir, format = "svg", title, window, robots, video;
+    std::string dir, title, window, robots;
     std::size_t frames = 1500;
     bool log_cost = false;
-    int png_width = 0;
-    VideoOptions video_options;
+    FigureOptions figures;
     std::vector<std::string> plugins;
   };
   auto o = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
       "plot", "Redraw a run's scene and cost figures, write replay.html, and make videos");
   cmd->add_option("DIR", o->dir, "Output directory of covsim run")->required();
-  cmd->add_option("--format", o->format, "Figures as svg, pdf or png")
-      ->check(CLI::IsMember({"svg", "pdf", "png"}))
-      ->capture_default_str();
+  o->figures.add_to(cmd, "scene, cost");
   cmd->add_option("--title", o->title, "The scene's title (default: scenario name and outcome)");
   cmd->add_option("--time-window", o->window, "T0,T1: draw the paths between T0 and T1 s");
   cmd->add_option("--robots", o->robots, "I,J,...: draw only these robots' paths and marks");
   cmd->add_flag("--log-cost", o->log_cost, "The cost figure on a log scale");
-  cmd->add_option("--png-width", o->png_width,
-                  "PNG figures this many pixels wide (default: two pixels per point)")
-      ->check(CLI::Range(64, 16384));
   cmd->add_option("--frames", o->frames, "Most frames in replay.html")
       ->check(CLI::Range(std::size_t{2}, std::size_t{1000000}))
-      ->capture_default_str();
-  cmd->add_option("--video", o->video, "Also encode the run as a video (FILE.mp4 or FILE.gif)");
-  cmd->add_option("--fps", o->video_options.fps, "Video frames per second")
-      ->check(CLI::Range(1.0, 240.0))
-      ->capture_default_str();
-  cmd->add_option("--speed", o->video_options.speedup,
-                  "Simulated seconds per second of video (default: the run in about 20 s)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--video-width", o->video_options.width, "Video width in pixels")
-      ->check(CLI::Range(160, 3840))
       ->capture_default_str();
   add_plugin_option(cmd, o->plugins);
   cmd->callback([o] {
     load_plugins(o->plugins);
-    SceneOptions scene_options{o->title, std::nullopt, {}};
+    o->figures.check();
+    SceneOptions scene_options{o->title, std::nullopt, {}, o->figures.drawn()};
     if (!o->window.empty()) {
       const auto w = number_list<double>(o->window, "--time-window", "T0,T1 in seconds, T0 < T1");
       if (w.size() != 2 || !(w[0] < w[1]) || w[0] < 0)
@@ -97,16 +83,17 @@ void add_plot_command(CLI::App& app) {
       if (id >= run.outcome.robots.size())
         throw InputError(fmt::format("--robots: robot {} does not exist (the run has {}: 0 to {})",
                                      id, run.outcome.robots.size(), run.outcome.robots.size() - 1));
-    const FigureFile file{*parse_figure_format(o->format), o->png_width};
+    const FigureFile file = o->figures.file();
     const std::string ext(extension(file.format));
     AtomicFile scene(d / ("scene." + ext)), cost(d / ("cost." + ext)), replay(d / "replay.html");
     scene.stream() << scene_figure(run.scenario, run.outcome, run.tracks(), scene_options, file);
     cost.stream() << cost_figure(run.samples, run.outcome, o->log_cost, file);
     replay.stream() << replay_html(run, o->frames);
-    if (!o->video.empty()) {
-      o->video_options.progress = true;
+    const std::string& video = o->figures.video;
+    if (!video.empty()) {
       try {
-        write_run_video(run, o->video, o->video_options);
+        write_run_video(run.scenario, run.outcome, run.tracks(), video,
+                        o->figures.video_settings());
       } catch (const std::runtime_error& e) {
         throw InputError(fmt::format("--video: {}", e.what()));
       }
@@ -115,7 +102,7 @@ void add_plot_command(CLI::App& app) {
     cost.commit();
     replay.commit();
     fmt::print("wrote {0}/scene.{1}, {0}/cost.{1}, {0}/replay.html{2}\n", d.string(), ext,
-               o->video.empty() ? "" : ", " + o->video);
+               video.empty() ? "" : ", " + video);
   });
 }
 

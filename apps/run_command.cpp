@@ -1,7 +1,9 @@
 // `covsim run SCENARIO [--seed N] [--set PATH=VALUE ...] [--out DIR] [--compress]`: runs the
 // scenario and writes scenario.json, final.json, trajectory.csv (trajectory.csv.gz with
 // --compress or "recording": {"compress": true}), metrics.csv, scene and cost figures into
-// DIR (default out/<scenario name>-<seed>), all of them only if the run succeeds.
+// DIR (default out/<scenario name>-<seed>), all of them only if the run succeeds; with
+// --video, a video of the run once DIR is in place. The figures' and the video's options are
+// covsim plot's.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -9,10 +11,12 @@
 #include <string>
 
 #include "analysis/figures/figures.hpp"
+#include "analysis/figures/run_video.hpp"
 #include "analysis/records/final_json.hpp"
 #include "analysis/records/run_files.hpp"
 #include "analysis/records/run_recorder.hpp"
 #include "apps/commands.hpp"
+#include "apps/figure_options.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
 #include "apps/scenario_options.hpp"
@@ -34,7 +38,7 @@ void add_run_command(CLI::App& app) {
     ScenarioOptions scenario;
     std::string out;
     std::string trace;
-    std::string format = "svg";
+    FigureOptions figures;
     bool compress = false;
     std::vector<std::string> plugins;
   };
@@ -45,15 +49,14 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--out", opts->out,
                   "Output directory, created if missing (default out/<scenario name>-<seed>)");
   cmd->add_option("--trace", opts->trace, "Also write the event trace to this file");
-  cmd->add_option("--format", opts->format, "Figures (scene, cost) as svg, pdf or png")
-      ->check(CLI::IsMember({"svg", "pdf", "png"}))
-      ->capture_default_str();
+  opts->figures.add_to(cmd, "scene, cost");
   cmd->add_flag("--compress", opts->compress,
                 "Write trajectory.csv.gz (gzip) instead of trajectory.csv, as "
                 "\"recording\": {\"compress\": true} does");
   add_plugin_option(cmd, opts->plugins);
   cmd->callback([opts] {
     load_plugins(opts->plugins);
+    opts->figures.check();  // before the run: a bad option must not cost one
     const Scenario scenario = opts->scenario.load();
     if (scenario.robot_positions.empty())
       throw ScenarioError(scenario.source, "$", "missing required key \"robots\"");
@@ -95,16 +98,18 @@ void add_run_command(CLI::App& app) {
     RunProgress progress(&recorder);  // a line on stderr during a long run, on a terminal
     const CoverageOutcome outcome = run_coverage(scenario, &progress, trace.get());
 
-    const FigureFormat format = *parse_figure_format(opts->format);
-    const std::string ext(extension(format));
+    const FigureFile figure = opts->figures.file();
+    const std::string ext(extension(figure.format));
     AtomicFile final_file(work / "final.json"), scene(work / ("scene." + ext)),
         cost(work / ("cost." + ext));
     AtomicFile scenario_copy(work / "scenario.json");
     scenario_copy.stream()
         << portable_scenario(scenario, fs::path(opts->scenario.file).parent_path()).dump(2) << "\n";
     final_file.stream() << final_json(outcome);
-    scene.stream() << scene_figure(scenario, outcome, recorder.tracks(), {}, FigureFile{format, 0});
-    cost.stream() << cost_figure(recorder.samples(), outcome, false, FigureFile{format, 0});
+    SceneOptions scene_options;
+    scene_options.layers = opts->figures.drawn();
+    scene.stream() << scene_figure(scenario, outcome, recorder.tracks(), scene_options, figure);
+    cost.stream() << cost_figure(recorder.samples(), outcome, false, figure);
     recorder.commit();
     scenario_copy.commit();
     final_file.commit();
@@ -127,6 +132,17 @@ void add_run_command(CLI::App& app) {
       fmt::print(
           "robot {} left Ω at ({:.6g}, {:.6g}), t = {:.2f} s, on its way to ({:.6g}, {:.6g})\n",
           l->robot, l->position.x, l->position.y, l->time.seconds(), l->goal.x, l->goal.y);
+    // After the folder and the summary: a failed encoding leaves the run's outputs whole, and no
+    // video.
+    const std::string& video = opts->figures.video;
+    if (!video.empty()) {
+      try {
+        write_run_video(scenario, outcome, recorder.tracks(), video,
+                        opts->figures.video_settings());
+      } catch (const std::runtime_error& e) {
+        throw InputError(fmt::format("--video: {}", e.what()));
+      }
+    }
     if (const auto& f = outcome.planner_failure) {
       // The results rest on the planner's promise; a broken promise fails the run.
       throw std::runtime_error(fmt::format(
@@ -137,9 +153,9 @@ void add_run_command(CLI::App& app) {
     }
     fmt::print(
         "wrote {0}/scenario.json, {0}/final.json, {0}/{2}, {0}/metrics.csv, {0}/scene.{1}, "
-        "{0}/cost.{1}\n",
-        dir.string(), extension(*parse_figure_format(opts->format)),
-        trajectory_file_name(recording.compress));
+        "{0}/cost.{1}{3}\n",
+        dir.string(), ext, trajectory_file_name(recording.compress),
+        video.empty() ? "" : ", " + video);
   });
 }
 

@@ -93,31 +93,52 @@ std::vector<std::pair<double, std::string>> axis_ticks(double lo, double hi, boo
 }
 }  // namespace
 
+namespace {
+// Distances outside the frame, in text heights.
+constexpr double kTick = 0.4, kTickGap = 0.25, kLabelGap = 0.45, kAscent = 0.95, kDescent = 0.25;
+
+double widest_y_label(const Axes& a, double font) {
+  double widest = 0;
+  for (const auto& [y, label] : axis_ticks(a.data.lo.y, a.data.hi.y, a.log_y, 6))
+    widest = std::max(widest, text_width(label, font));
+  return widest;
+}
+}  // namespace
+
+double axes_left_room(const Axes& a, double font) {
+  return (kTick + kTickGap + kLabelGap + kAscent + kDescent + 0.2) * font + widest_y_label(a, font);
+}
+
+double axes_bottom_room(double font) {
+  return (kTick + kTickGap + 2 * (kAscent + kDescent) + kLabelGap + 0.2) * font;
+}
+
 void draw_axes(Canvas& c, const Axes& a, std::string_view x_label, std::string_view y_label,
-               bool grid) {
+               bool grid, double font) {
   const Colour ink = Colour::hex(0x222222), light = Colour::hex(0xe4e4e4);
-  const double font = 10, tick = 4;
-  const Stroke grid_line{light, 0.6}, tick_line{ink, 0.8};
+  const double tick = kTick * font, u = font / 10;
+  const Stroke grid_line{light, 0.6 * u}, tick_line{ink, 0.8 * u};
+  const double x_values = a.hi.y + tick + (kTickGap + kAscent) * font;
   for (const auto& [x, label] : axis_ticks(a.data.lo.x, a.data.hi.x, a.log_x, 8)) {
     const double px = a.to_px({x, a.data.lo.y}).x;
     if (grid) c.line({px, a.lo.y}, {px, a.hi.y}, grid_line);
     c.line({px, a.hi.y}, {px, a.hi.y + tick}, tick_line);
-    c.text({px, a.hi.y + tick + font + 1}, label, font, ink, Align::centre);
+    c.text({px, x_values}, label, font, ink, Align::centre);
   }
-  const auto yticks = axis_ticks(a.data.lo.y, a.data.hi.y, a.log_y, 6);
-  double widest = 0;
-  for (const auto& [y, label] : yticks) {
+  for (const auto& [y, label] : axis_ticks(a.data.lo.y, a.data.hi.y, a.log_y, 6)) {
     const double py = a.to_px({a.data.lo.x, y}).y;
     if (grid) c.line({a.lo.x, py}, {a.hi.x, py}, grid_line);
     c.line({a.lo.x - tick, py}, {a.lo.x, py}, tick_line);
-    c.text({a.lo.x - tick - 2, py + font / 2 - 1}, label, font, ink, Align::right);
-    widest = std::max(widest, c.text_width(label, font));
+    // Digits' height centred on the tick.
+    c.text({a.lo.x - tick - kTickGap * font, py + 0.36 * font}, label, font, ink, Align::right);
   }
-  c.rectangle(a.lo, a.hi, std::nullopt, Stroke{ink, 0.8});
-  c.text({(a.lo.x + a.hi.x) / 2, a.hi.y + tick + 2 * font + 8}, x_label, font + 1, ink,
-         Align::centre);
-  c.text({a.lo.x - tick - widest - 8, (a.lo.y + a.hi.y) / 2}, y_label, font + 1, ink, Align::centre,
-         90.0);
+  c.rectangle(a.lo, a.hi, std::nullopt, Stroke{ink, 0.8 * u});
+  c.text({(a.lo.x + a.hi.x) / 2, x_values + (kDescent + kLabelGap + kAscent) * font}, x_label, font,
+         ink, Align::centre);
+  // Turned a quarter anticlockwise, the label's glyphs lie left of its baseline.
+  const double y_label_x =
+      a.lo.x - tick - (kTickGap + kLabelGap + kDescent) * font - widest_y_label(a, font);
+  c.text({y_label_x, (a.lo.y + a.hi.y) / 2}, y_label, font, ink, Align::centre, 90.0);
 }
 
 }  // namespace covsim

@@ -25,8 +25,13 @@ Axes chart_axes(Box data, Vec2 lo, Vec2 hi, bool log_y = false, bool log_x = fal
 // Axes for a map: x and y in the same scale, `data` centred in the picture rectangle.
 Axes map_axes(Box data, Vec2 lo, Vec2 hi);
 
-// The frame, light grid lines (if `grid`), ticks with their values, and the labels.
+// The frame, light grid lines (if `grid`), ticks with their values, and the labels, in text
+// of `font` points.
 void draw_axes(Canvas& c, const Axes& a, std::string_view x_label, std::string_view y_label,
-               bool grid);
+               bool grid, double font);
+// The room draw_axes takes left of the frame (ticks, their values, the y label) and below it.
+// The ticks depend on the data only, so Axes over any rectangle give the room.
+double axes_left_room(const Axes& a, double font);
+double axes_bottom_room(double font);
 
 }  // namespace covsim

@@ -44,7 +44,65 @@ void check(cairo_status_t status, const char* what) {
   if (status != CAIRO_STATUS_SUCCESS)
     throw std::runtime_error(std::string(what) + ": " + cairo_status_to_string(status));
 }
+
+// Unhinted metrics on every surface, so that a layout measured once holds in SVG, PDF, PNG
+// and video frames alike.
+void set_text_options(cairo_t* cr) {
+  cairo_font_options_t* o = cairo_font_options_create();
+  cairo_font_options_set_hint_metrics(o, CAIRO_HINT_METRICS_OFF);
+  cairo_set_font_options(cr, o);
+  cairo_font_options_destroy(o);
+}
+
+void select_font(cairo_t* cr, double size, bool bold) {
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+}
+
+double advance(cairo_t* cr, std::string_view s, double size, bool bold) {
+  select_font(cr, size, bold);
+  cairo_text_extents_t e;
+  const std::string text(s);
+  cairo_text_extents(cr, text.c_str(), &e);
+  return e.x_advance;
+}
 }  // namespace
+
+double text_width(std::string_view s, double size, bool bold) {
+  // One small context per thread to measure with (sweeps draw from worker threads).
+  struct Measure {
+    cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
+    cairo_t* cr = cairo_create(surface);
+    Measure() { set_text_options(cr); }
+    ~Measure() {
+      cairo_destroy(cr);
+      cairo_surface_destroy(surface);
+    }
+  };
+  thread_local Measure m;
+  return advance(m.cr, s, size, bold);
+}
+
+std::vector<std::string> wrap_text(std::string_view s, double size, double width) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t start = 0;
+  while (start < s.size()) {
+    const std::size_t space = std::min(s.find(' ', start), s.size());
+    const std::string word(s.substr(start, space - start));
+    start = space + 1;
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && text_width(longer, size) > width) {
+      lines.push_back(line);
+      line = word;
+    } else {
+      line = longer;
+    }
+  }
+  if (!line.empty() || lines.empty()) lines.push_back(line);
+  return lines;
+}
 
 Canvas::Canvas(const FigureFile& file, double width, double height)
     : format_(file.format),
@@ -74,6 +132,7 @@ Canvas::Canvas(const FigureFile& file, double width, double height)
   }
   check(cairo_surface_status(surface_), "cairo surface");
   cr_ = cairo_create(surface_);
+  set_text_options(cr_);
   if (format == FigureFormat::png) cairo_scale(cr_, png_scale, png_scale);
   cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
@@ -87,6 +146,7 @@ Canvas Canvas::raster(int width, int height) {
   c.surface_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
   check(cairo_surface_status(c.surface_), "cairo surface");
   c.cr_ = cairo_create(c.surface_);
+  set_text_options(c.cr_);
   cairo_set_line_join(c.cr_, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(c.cr_, CAIRO_LINE_CAP_ROUND);
   return c;
@@ -190,19 +250,9 @@ void Canvas::cross(Vec2 c, double half, const Stroke& s) {
   cairo_stroke(cr_);
 }
 
-double Canvas::text_width(std::string_view s, double size, bool bold) {
-  cairo_select_font_face(cr_, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr_, size);
-  cairo_text_extents_t e;
-  const std::string text(s);
-  cairo_text_extents(cr_, text.c_str(), &e);
-  return e.x_advance;
-}
-
 void Canvas::text(Vec2 p, std::string_view s, double size, Colour c, Align align, double degrees,
                   bool bold) {
-  const double w = text_width(s, size, bold);
+  const double w = advance(cr_, s, size, bold);  // selects the font too
   cairo_save(cr_);
   cairo_translate(cr_, p.x, p.y);
   cairo_rotate(cr_, -degrees * M_PI / 180.0);

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/figures/figure_size.hpp"
 #include "core/vec2.hpp"
 
 typedef struct _cairo cairo_t;
@@ -25,6 +26,7 @@ std::string_view extension(FigureFormat f);  // "svg", ...
 struct FigureFile {
   FigureFormat format = FigureFormat::svg;
   int png_width = 0;  // a PNG's width in pixels; 0: two pixels per point
+  FigureSize size = default_figure_size();
 };
 
 struct Colour {
@@ -39,6 +41,13 @@ struct Stroke {
 };
 
 enum class Align { left, centre, right };
+
+// The advance of a line of text in DejaVu Sans at `size` points, as every canvas lays it out
+// (unhinted metrics, whatever the surface), for laying out a figure before drawing it.
+double text_width(std::string_view s, double size, bool bold = false);
+// `s` broken at spaces into lines no wider than `width` where it can be (a word wider than
+// `width` keeps a line to itself).
+std::vector<std::string> wrap_text(std::string_view s, double size, double width);
 
 // An RGBA image, row 0 at the top, drawn scaled into a rectangle (a density map, say).
 struct Image {
@@ -70,7 +79,6 @@ class Canvas {
   // Text whose baseline starts, centres or ends at p, turned by `degrees` anticlockwise.
   void text(Vec2 p, std::string_view s, double size, Colour c, Align align = Align::left,
             double degrees = 0.0, bool bold = false);
-  double text_width(std::string_view s, double size, bool bold = false);
   void image(const Image& img, Vec2 lo, Vec2 hi);  // lo: top-left corner
   // Clips what follows to the rings (even-odd) until the matching pop_clip.
   void push_clip(const std::vector<std::vector<Vec2>>& rings);

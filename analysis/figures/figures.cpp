@@ -5,11 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <functional>
 #include <set>
 
 #include "analysis/figures/line_chart.hpp"
-#include "analysis/figures/map_view.hpp"
+#include "analysis/figures/map_legend.hpp"
+#include "analysis/figures/robot_palette.hpp"
+#include "analysis/records/measure.hpp"
 #include "analysis/records/run_files.hpp"
 #include "geometry/voronoi_partition.hpp"
 
@@ -21,10 +22,6 @@ std::string scenario_name(const std::string& source) {
 }
 
 namespace {
-const Colour kInk = Colour::hex(0x222222);
-const Colour kVirtualCells = Colour::hex(0x1f5fbf), kRealCells = Colour::hex(0xd62728);
-const Colour kProjected = Colour::hex(0xffd21f);
-
 std::vector<std::vector<Vec2>> cell_rings(const VoronoiPartition& p) {
   std::vector<std::vector<Vec2>> out;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -34,32 +31,15 @@ std::vector<std::vector<Vec2>> cell_rings(const VoronoiPartition& p) {
   return out;
 }
 
-// One legend row: a symbol drawn by `symbol` at the row's left, then the label.
-struct Legend {
-  Canvas& c;
-  Vec2 at;
-  void row(const std::string& label, const std::function<void(Vec2)>& symbol) {
-    symbol(at + Vec2{8, -4});
-    c.text(at + Vec2{22, 0}, label, 10, kInk);
-    at.y += 15;
-  }
-};
 }  // namespace
 
 std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcome,
                          const std::vector<RobotTrack>& tracks, const SceneOptions& options,
                          const FigureFile& file) {
   const Environment& env = *scenario.environment;
-  const Box& b = env.bounds();
-  // The map's rectangle keeps Ω's aspect; the legend and colour bar sit to its right.
-  const double map_w = 620, aspect = std::clamp(b.size().y / b.size().x, 0.3, 1.6);
-  const double left = 56, top = 40, bottom = 48, side = 200;
-  const double map_h = map_w * aspect;
-  const double w = left + map_w + side, h = top + map_h + bottom;
-  Canvas c(file, w, h);
-  c.rectangle({0, 0}, {w, h}, Colour::hex(0xffffff));
-  const MapView view(scenario, {left, top}, {left + map_w, top + map_h});
-  view.draw_background(c);
+  const Layers& layers = options.layers;
+  const double f = file.size.font, pad = 0.6 * f;
+  const Marks marks{file.size.unit()};
 
   std::set<std::uint32_t> shown(options.robots.begin(), options.robots.end());
   const auto drawn = [&](std::size_t i) {
@@ -81,6 +61,52 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
       state[i].projected = !env.contains(k.virtual_target[j]);
     }
 
+  std::string title = options.title;
+  if (title.empty()) {
+    title =
+        fmt::format("{}: {} robot{}, {} at t = {:.1f} s; H real {:.4g}, virtual {:.4g} {}",
+                    scenario_name(scenario.source), outcome.robots.size(),
+                    outcome.robots.size() == 1 ? "" : "s",
+                    outcome.converged ? "converged" : "stopped (" + outcome.stop_reason + ")",
+                    outcome.sim_time.seconds(), outcome.cost_real, outcome.cost_virtual, kCostUnit);
+    if (options.time_window)
+      title += fmt::format(" (paths {:g}-{:g} s)", options.time_window->first,
+                           options.time_window->second);
+  }
+
+  // Laid out before drawing: the title's lines, the room the axes' labels take, the colour
+  // bar, and the legend under the map (or beside it on a slide, whose height is fixed).
+  const double w = file.size.width, title_font = f + 1;
+  const std::vector<std::string> title_lines = layers.has(Layer::title)
+                                                   ? wrap_text(title, title_font, w - 2 * pad)
+                                                   : std::vector<std::string>{};
+  const double top =
+      pad + (title_lines.empty() ? 0 : 1.3 * title_font * title_lines.size() + 0.3 * f);
+  MapView view(scenario);
+  const bool axes = layers.has(Layer::axes);
+  const double left = axes ? axes_left_room(view.axes(), f) : pad;
+  const double bottom = axes ? axes_bottom_room(f) : pad;
+  const double bar = layers.has(Layer::density) ? view.colour_bar_width(f) : 0;
+  const Legend legend =
+      layers.has(Layer::legend) ? map_legend(layers, marks, view, f) : Legend({}, f);
+  const double aspect = MapView::aspect(scenario);
+  const bool beside = file.size.height > 0;
+  double map_w = w - left - bar - pad, h = file.size.height;
+  int columns = 1;
+  if (beside) {
+    if (!legend.empty()) map_w -= legend.entry_width() + 2 * pad;
+    map_w = std::max(10.0, std::min(map_w, (h - top - bottom) / aspect));
+  } else {
+    columns = legend.columns_within(w - 2 * pad);
+    h = top + map_w * aspect + bottom + (legend.empty() ? 0 : legend.size(columns).y + pad);
+  }
+  const double map_h = map_w * aspect;
+  view.place({left, top}, {left + map_w, top + map_h});
+
+  Canvas c(file, w, h);
+  c.rectangle({0, 0}, {w, h}, Colour::hex(0xffffff));
+  view.draw_background(c, layers, f);
+
   // The two partitions at that time, clipped to Ω.
   const CellIntegrator integrator(env, *scenario.density);
   std::vector<Vec2> virt, real;
@@ -89,14 +115,13 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
     real.push_back(r.position);
   }
   const auto split = VoronoiPartition::Coincident::split;  // as the controller splits them
-  const double scale = std::clamp(view.px_per_metre() * env.diameter() / 900.0, 0.6, 1.2);
   c.push_clip(view.to_px(env.rings()));
-  if (!state.empty()) {
+  if (!state.empty() && layers.has(Layer::cells))
     for (const auto& cell : cell_rings(VoronoiPartition(integrator, virt, split)))
-      c.stroke(view.to_px({cell}), Stroke{kVirtualCells, 1.2 * scale});
+      c.stroke(view.to_px({cell}), marks.cells());
+  if (!state.empty() && layers.has(Layer::real_cells))
     for (const auto& cell : cell_rings(VoronoiPartition(integrator, real, split)))
-      c.stroke(view.to_px({cell}), Stroke{kRealCells, 1.2 * scale, {5.0, 3.0}});
-  }
+      c.stroke(view.to_px({cell}), marks.real_cells());
   c.pop_clip();
   // Paths: the virtual generator's thin and dashed, the robot's solid, in its colour. Above
   // the obstacles, unclipped: a walk along a wall lies on ∂Ω, where a clip to Ω would hide
@@ -116,74 +141,34 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
       rp.push_back(view.to_px(k.position[last - 1]));
     }
     const Colour col = robot_colour(i);
-    c.polyline(vp, Stroke{Colour{col.r, col.g, col.b, 0.6}, 0.8 * scale, {3.0, 2.5}});
-    c.polyline(rp, Stroke{col, 1.6 * scale});
+    if (layers.has(Layer::virtual_paths)) c.polyline(vp, marks.virtual_path(col));
+    if (layers.has(Layer::paths)) c.polyline(rp, marks.path(col));
   }
 
-  const double mark = 4.0 * scale;
   for (std::size_t i = 0; i < state.size(); ++i) {
     if (!drawn(i)) continue;
     const RobotOutcome& r = state[i];
     const Colour col = robot_colour(i);
-    if (i < tracks.size() && !tracks[i].t.empty()) {
+    if (layers.has(Layer::paths) && i < tracks.size() && !tracks[i].t.empty()) {
       const auto [first, last] = tracks[i].window(t0, t1);
-      if (first < last)
-        c.circle(view.to_px(tracks[i].position[first]), mark, Colour::hex(0xffffff),
-                 Stroke{col, 1.3});
+      if (first < last) marks.start(c, view.to_px(tracks[i].position[first]), col);
     }
-    c.cross(view.to_px(r.virtual_target), mark * 0.9, Stroke{kInk, 1.2});
-    c.square(view.to_px(r.virtual_generator), mark * 0.6, col, Stroke{Colour::hex(0xffffff), 0.6});
-    if (r.projected) {
-      c.cross(view.to_px(r.real_target), mark * 1.3, Stroke{Colour::hex(0x000000), 3.2});
-      c.cross(view.to_px(r.real_target), mark * 1.3, Stroke{kProjected, 1.6});
-    }
+    if (layers.has(Layer::targets)) marks.target(c, view.to_px(r.virtual_target));
+    if (layers.has(Layer::generators)) marks.generator(c, view.to_px(r.virtual_generator), col);
+    if (layers.has(Layer::targets) && r.projected)
+      marks.projected_target(c, view.to_px(r.real_target));
     const Vec2 p = view.to_px(r.position);
-    c.circle(p, mark, col, Stroke{Colour::hex(0xffffff), 1.0});
-    c.text(p + Vec2{mark + 1.5, -mark - 1}, std::to_string(i), 8.5 * scale + 1.5, kInk);
+    if (layers.has(Layer::robots)) marks.robot(c, p, col);
+    if (layers.has(Layer::ids)) marks.id(c, p, i, 0.9 * f);
   }
-  view.draw_scale_bar(c);
+  if (axes) view.draw_scale_bar(c, f);
 
-  // Title, legend and colour bar.
-  std::string title = options.title;
-  if (title.empty()) {
-    title = fmt::format("{}: {} robots, {} at t = {:.1f} s; H real {:.4g}, virtual {:.4g}",
-                        scenario_name(scenario.source), outcome.robots.size(),
-                        outcome.converged ? "converged" : "stopped (" + outcome.stop_reason + ")",
-                        outcome.sim_time.seconds(), outcome.cost_real, outcome.cost_virtual);
-    if (options.time_window)
-      title += fmt::format(" (paths {:g}-{:g} s)", options.time_window->first,
-                           options.time_window->second);
-  }
-  c.text({left, 22}, title, 12, kInk);
-  Legend legend{c, {left + map_w + 24, top + 10}};
-  const Colour sample = robot_colour(0);
-  legend.row("robot path (colour per robot)", [&](Vec2 p) {
-    c.line(p - Vec2{8, 0}, p + Vec2{8, 0}, Stroke{sample, 1.6});
-  });
-  legend.row("virtual generator path", [&](Vec2 p) {
-    c.line(p - Vec2{8, 0}, p + Vec2{8, 0}, Stroke{sample, 0.8, {3.0, 2.5}});
-  });
-  legend.row("start", [&](Vec2 p) { c.circle(p, 4, Colour::hex(0xffffff), Stroke{sample, 1.3}); });
-  legend.row("robot (ID)", [&](Vec2 p) { c.circle(p, 4, sample); });
-  legend.row("virtual generator", [&](Vec2 p) { c.square(p, 2.6, sample); });
-  legend.row("virtual target", [&](Vec2 p) { c.cross(p, 3.6, Stroke{kInk, 1.2}); });
-  legend.row("projected real target", [&](Vec2 p) {
-    c.cross(p, 5, Stroke{Colour::hex(0x000000), 3.2});
-    c.cross(p, 5, Stroke{kProjected, 1.6});
-  });
-  legend.row("cells of virtual generators", [&](Vec2 p) {
-    c.line(p - Vec2{8, 0}, p + Vec2{8, 0}, Stroke{kVirtualCells, 1.2});
-  });
-  legend.row("cells of real positions", [&](Vec2 p) {
-    c.line(p - Vec2{8, 0}, p + Vec2{8, 0}, Stroke{kRealCells, 1.2, {5.0, 3.0}});
-  });
-  legend.row("obstacle", [&](Vec2 p) {
-    c.rectangle(p - Vec2{7, 5}, p + Vec2{7, 5}, Colour::hex(0x4a4a4a));
-  });
-  if (view.uniform()) legend.row("density φ uniform", [](Vec2) {});
-  const double bar_top = legend.at.y + 14;
-  if (top + map_h - bar_top > 60)
-    view.draw_colour_bar(c, {left + map_w + 40, bar_top}, {left + map_w + 52, top + map_h});
+  for (std::size_t k = 0; k < title_lines.size(); ++k)
+    c.text({pad, pad + title_font * (1.3 * k + 1.0)}, title_lines[k], title_font, Marks::ink());
+  if (bar > 0) view.draw_colour_bar(c, left + map_w, top, top + map_h, f);
+  if (!legend.empty())
+    legend.draw(c, beside ? Vec2{left + map_w + bar + pad, top} : Vec2{pad, top + map_h + bottom},
+                columns);
   return c.finish();
 }
 
@@ -192,7 +177,7 @@ std::string cost_figure(const std::vector<MetricsSample>& samples, const Coverag
   LineChart chart;
   chart.title = "Cost of the real and the virtual generators";
   chart.x_label = "time [s]";
-  chart.y_label = "cost H [weight · m²]";
+  chart.y_label = fmt::format("cost H [{}]", kCostUnit);
   chart.log_y = log_y;
   ChartSeries real{"H of the real positions", {}, false, false, {}},
       virt{"H of the virtual generators", {}, false, true, {}};

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/figures/canvas.hpp"
+#include "analysis/figures/layers.hpp"
 #include "analysis/records/robot_track.hpp"
 #include "sim/coverage_run.hpp"
 #include "sim/metrics_sample.hpp"
@@ -17,6 +18,7 @@ struct SceneOptions {
   std::string title;                                     // empty: from the scenario's name
   std::optional<std::pair<double, double>> time_window;  // [t0, t1] s; unset: the whole run
   std::vector<std::uint32_t> robots;                     // the robots drawn; empty: all
+  Layers layers = Layers::all();                         // what is drawn
 };
 
 // Ω with its obstacles (grey), the density as a colour map with its bar, each robot's path
@@ -24,13 +26,16 @@ struct SceneOptions {
 // generator's path (thin, dashed) and final position (square), the virtual targets
 // (crosses), projected real targets (yellow crosses), the last partitions of the virtual
 // generators (blue) and of the real positions (red, dashed); axes in metres, a scale bar, a
-// legend and a title. With a time window the paths are those of the window and the robots
-// stand where they were at its end.
+// legend and a title: each a layer that options.layers may leave out. The figure is
+// file.size wide, its text file.size's font; the legend goes under the map, or beside it
+// when the height is fixed (a slide). With a time window the paths are those of the window
+// and the robots stand where they were at its end.
 std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcome,
                          const std::vector<RobotTrack>& tracks, const SceneOptions& options,
                          const FigureFile& file);
 
-// The cost H of the real and the virtual generators over time, the convergence time marked.
+// The cost H of the real and the virtual generators over time (in m⁴·φ), the convergence
+// time marked; file.size wide (and high, or about 0.62 of its width).
 std::string cost_figure(const std::vector<MetricsSample>& samples, const CoverageOutcome& outcome,
                         bool log_y, const FigureFile& file);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/figures/axes.hpp"
+#include "analysis/figures/legend.hpp"
 
 namespace covsim {
 
@@ -13,10 +14,7 @@ constexpr std::uint32_t kPalette[] = {0xd62728, 0x1f5fbf, 0x2ca02c, 0xff7f0e,
 }  // namespace
 
 std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
-  const double w = 680, h = 420, left = 80, right = 20, top = 40, bottom = 56;
-  // The legend goes under the chart, a row per series, so it never hides a line.
-  const double legend_row = 16;
-  const double total_h = h + 8 + legend_row * static_cast<double>(chart.series.size());
+  const double f = file.size.font, u = file.size.unit(), pad = 0.6 * f, w = file.size.width;
   const auto visible = [&](double x, double y) {
     return std::isfinite(x) && std::isfinite(y) && (!chart.log_y || y > 0) &&
            (!chart.log_x || x > 0);
@@ -37,12 +35,35 @@ std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
   }
   // Linear charts start at zero when their data are positive: costs and times compare.
   if (!chart.log_y && data.lo.y > 0) data.lo.y = 0;
-  Canvas c(file, w, total_h);
-  c.rectangle({0, 0}, {w, total_h}, Colour::hex(0xffffff));
-  const Axes a = chart_axes(data, {left, top}, {w - right, h - bottom}, chart.log_y, chart.log_x);
+  const auto line = [&](std::size_t k) {
+    const bool dashed = chart.series[k].dashed;
+    return Stroke{Colour::hex(kPalette[k % 8]), 1.5 * u,
+                  dashed ? std::vector{4.5 * u, 3.0 * u} : std::vector<double>{}};
+  };
+  // Laid out before drawing: the title's lines, the axes' labels, and the legend under the
+  // chart, so that it never hides a line.
+  std::vector<LegendEntry> entries;
+  for (std::size_t k = 0; k < chart.series.size(); ++k)
+    entries.push_back({chart.series[k].label, [s = line(k), f](Canvas& c, Vec2 p) {
+                         c.line(p - Vec2{0.9 * f, 0}, p + Vec2{0.9 * f, 0}, s);
+                       }});
+  const Legend legend(std::move(entries), f);
+  const int columns = legend.columns_within(w - 2 * pad);
+  const double legend_h = legend.empty() ? 0 : legend.size(columns).y + pad;
+  const double title_font = f + 1;
+  const auto title = wrap_text(chart.title, title_font, w - 2 * pad);
+  const double top = pad + 1.3 * title_font * static_cast<double>(title.size()) + pad;
+  const double h = file.size.height > 0 ? file.size.height : 0.62 * w;
+  Axes a = chart_axes(data, {0, 0}, {1, 1}, chart.log_y, chart.log_x);
+  a.lo = {axes_left_room(a, f), top};
+  a.hi = {w - 1.5 * pad, h - legend_h - axes_bottom_room(f)};
+
+  Canvas c(file, w, h);
+  c.rectangle({0, 0}, {w, h}, Colour::hex(0xffffff));
   const Colour ink = Colour::hex(0x222222);
-  draw_axes(c, a, chart.x_label, chart.y_label, true);
-  c.text({left, 22}, chart.title, 13, ink);
+  draw_axes(c, a, chart.x_label, chart.y_label, true, f);
+  for (std::size_t k = 0; k < title.size(); ++k)
+    c.text({pad, pad + title_font * (1.3 * k + 1.0)}, title[k], title_font, ink);
   c.push_clip({{a.lo, {a.hi.x, a.lo.y}, a.hi, {a.lo.x, a.hi.y}}});
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const ChartSeries& s = chart.series[k];
@@ -56,31 +77,22 @@ std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
       c.fill({band}, Colour::hex(colour, 0.18));
     }
     for (const auto& [x, y] : s.samples)
-      if (visible(x, y)) c.circle(a.to_px({x, y}), 2.0, Colour::hex(colour, 0.25));
-    std::vector<Vec2> line;
+      if (visible(x, y)) c.circle(a.to_px({x, y}), 1.6 * u, Colour::hex(colour, 0.25));
+    std::vector<Vec2> points;
     for (const ChartPoint& p : s.points)
-      if (visible(p.x, p.y)) line.push_back(a.to_px({p.x, p.y}));
-    const Stroke stroke{Colour::hex(colour), 2.0,
-                        s.dashed ? std::vector{6.0, 4.0} : std::vector<double>{}};
-    c.polyline(line, stroke);
+      if (visible(p.x, p.y)) points.push_back(a.to_px({p.x, p.y}));
+    c.polyline(points, line(k));
     if (s.points.size() < 40)
-      for (const Vec2& p : line)
-        c.circle(p, 2.5, Colour::hex(colour));
+      for (const Vec2& p : points)
+        c.circle(p, 2.0 * u, Colour::hex(colour));
   }
   if (chart.marker) {
     const double px = a.to_px({chart.marker->first, a.data.lo.y}).x;
-    c.line({px, a.lo.y}, {px, a.hi.y}, Stroke{ink, 1.0, {3.0, 3.0}});
-    c.text({px - 4, a.lo.y + 14}, chart.marker->second, 10, ink, Align::right);
+    c.line({px, a.lo.y}, {px, a.hi.y}, Stroke{ink, 0.8 * u, {3.0 * u, 3.0 * u}});
+    c.text({px - 0.4 * f, a.lo.y + 1.3 * f}, chart.marker->second, f, ink, Align::right);
   }
   c.pop_clip();
-  for (std::size_t k = 0; k < chart.series.size(); ++k) {
-    const ChartSeries& s = chart.series[k];
-    const double ly = h + 4 + legend_row * static_cast<double>(k);
-    c.line({left, ly}, {left + 25, ly},
-           Stroke{Colour::hex(kPalette[k % 8]), 2.0,
-                  s.dashed ? std::vector{6.0, 4.0} : std::vector<double>{}});
-    c.text({left + 32, ly + 4}, s.label, 11, ink);
-  }
+  if (!legend.empty()) legend.draw(c, {pad, h - legend_h}, columns);
   return c.finish();
 }
 

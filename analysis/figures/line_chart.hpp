@@ -32,6 +32,7 @@ struct LineChart {
   std::optional<std::pair<double, std::string>> marker;
 };
 
+// The chart file.size wide and high (or about 0.62 of its width), its legend under it.
 std::string draw_line_chart(const LineChart& chart, const FigureFile& file);
 
 }  // namespace covsim

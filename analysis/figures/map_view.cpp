@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 
+#include "analysis/figures/marks.hpp"
+
 namespace covsim {
 
 Colour density_colour(double t) {
@@ -19,19 +21,20 @@ Colour density_colour(double t) {
   return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b), 1.0};
 }
 
-Colour robot_colour(std::size_t i) {
-  // Tableau's 20 colours, dark ones first.
-  static constexpr std::array<std::uint32_t, 20> palette = {
-      0x1f77b4, 0xd62728, 0x2ca02c, 0x9467bd, 0x8c564b, 0xe377c2, 0x17becf,
-      0x7f7f7f, 0xbcbd22, 0xff7f0e, 0x393b79, 0x637939, 0x8c6d31, 0x843c39,
-      0x7b4173, 0x3182bd, 0xe6550d, 0x31a354, 0x756bb1, 0x636363};
-  return Colour::hex(palette[i % palette.size()]);
-}
-
-MapView::MapView(const Scenario& scenario, Vec2 lo, Vec2 hi) : scenario_(scenario) {
+Box MapView::extent(const Scenario& scenario) {
   const Box& b = scenario.environment->bounds();
   const Vec2 pad = 0.03 * b.size();
-  axes_ = map_axes(Box{b.lo - pad, b.hi + pad}, lo, hi);
+  return Box{b.lo - pad, b.hi + pad};
+}
+
+double MapView::aspect(const Scenario& scenario) {
+  const Box e = extent(scenario);
+  return std::clamp(e.size().y / e.size().x, 0.3, 1.6);
+}
+
+MapView::MapView(const Scenario& scenario) : scenario_(scenario) {
+  const Box& b = scenario.environment->bounds();
+  place({0, 0}, {1, aspect(scenario)});
   // The density sampled at pixel centres over Ω's box, about 2 pixels per point on the
   // longer side (an image: a few kB, whatever the density).
   uniform_ = scenario.density->is_uniform();
@@ -54,6 +57,14 @@ MapView::MapView(const Scenario& scenario, Vec2 lo, Vec2 hi) : scenario_(scenari
     density_.pixels.push_back(density_colour(density_max_ > 0 ? d / density_max_ : 0.0));
 }
 
+MapView::MapView(const Scenario& scenario, Vec2 lo, Vec2 hi) : MapView(scenario) {
+  place(lo, hi);
+}
+
+void MapView::place(Vec2 lo, Vec2 hi) {
+  axes_ = map_axes(extent(scenario_), lo, hi);
+}
+
 std::vector<std::vector<Vec2>> MapView::to_px(const std::vector<std::vector<Vec2>>& rings) const {
   std::vector<std::vector<Vec2>> out;
   for (const auto& r : rings) {
@@ -64,51 +75,92 @@ std::vector<std::vector<Vec2>> MapView::to_px(const std::vector<std::vector<Vec2
   return out;
 }
 
-void MapView::draw_background(Canvas& c) const {
+void MapView::draw_background(Canvas& c, const Layers& layers, double font) const {
   const Environment& env = *scenario_.environment;
   const auto omega = to_px(env.rings());
-  // Everything outside Ω in the frame is obstacle.
+  const double u = font / 10;
   c.push_clip({{axes_.lo, {axes_.hi.x, axes_.lo.y}, axes_.hi, {axes_.lo.x, axes_.hi.y}}});
-  c.rectangle(axes_.lo, axes_.hi, Colour::hex(0x4a4a4a));
-  c.fill(omega, Colour::hex(0xffffff));
-  if (!uniform_) {
+  if (layers.has(Layer::obstacles)) {
+    // Everything outside Ω in the frame is obstacle.
+    c.rectangle(axes_.lo, axes_.hi, Marks::obstacle());
+    c.fill(omega, Colour::hex(0xffffff));
+  }
+  if (!uniform_ && layers.has(Layer::density)) {
     c.push_clip(omega);
     const Box& b = env.bounds();
     c.image(density_, to_px({b.lo.x, b.hi.y}), to_px({b.hi.x, b.lo.y}));
     c.pop_clip();
   }
-  c.stroke(omega, Stroke{Colour::hex(0x000000), 0.8});
+  if (layers.has(Layer::obstacles)) c.stroke(omega, Stroke{Colour::hex(0x000000), 0.8 * u});
   c.pop_clip();
-  draw_axes(c, axes_, "x [m]", "y [m]", false);
+  if (layers.has(Layer::axes)) draw_axes(c, axes_, "x [m]", "y [m]", false, font);
 }
 
-void MapView::draw_colour_bar(Canvas& c, Vec2 lo, Vec2 hi) const {
+namespace {
+// The colour bar's parts across, in text heights: a gap, the turned label, a gap, the bar, the
+// ticks and a gap before their values.
+constexpr double kBarGap = 0.7, kBarLabel = 1.2, kBarLabelGap = 0.3, kBar = 0.9, kBarTick = 0.3,
+                 kBarValueGap = 0.25;
+}  // namespace
+
+double MapView::colour_bar_width(double font) const {
+  if (uniform_) return 0;
+  double widest = 0;
+  const double step = tick_step(density_max_, 4);
+  for (double v = 0; v <= density_max_ * (1 + 1e-9); v += step)
+    widest = std::max(widest, text_width(fmt::format("{:g}", v), font));
+  return (kBarGap + kBarLabel + kBarLabelGap + kBar + kBarTick + kBarValueGap + 0.2) * font +
+         widest;
+}
+
+void MapView::draw_colour_bar(Canvas& c, double left, double top, double bottom,
+                              double font) const {
   if (uniform_) return;
+  const double x0 = left + (kBarGap + kBarLabel + kBarLabelGap) * font, x1 = x0 + kBar * font;
   Image bar{1, 64, {}};
   for (int y = 0; y < bar.height; ++y)
     bar.pixels.push_back(density_colour(1.0 - (y + 0.5) / bar.height));
-  c.image(bar, lo, hi);
-  const Colour ink = Colour::hex(0x222222);
-  c.rectangle(lo, hi, std::nullopt, Stroke{ink, 0.6});
+  c.image(bar, {x0, top}, {x1, bottom});
+  const Colour ink = Marks::ink();
+  const double u = font / 10;
+  c.rectangle({x0, top}, {x1, bottom}, std::nullopt, Stroke{ink, 0.6 * u});
   const double step = tick_step(density_max_, 4);
   for (double v = 0; v <= density_max_ * (1 + 1e-9); v += step) {
-    const double y = hi.y - (hi.y - lo.y) * v / density_max_;
-    c.line({hi.x, y}, {hi.x + 3, y}, Stroke{ink, 0.6});
-    c.text({hi.x + 5, y + 3.5}, fmt::format("{:g}", v), 9, ink);
+    const double y = bottom - (bottom - top) * v / density_max_;
+    c.line({x1, y}, {x1 + kBarTick * font, y}, Stroke{ink, 0.6 * u});
+    c.text({x1 + (kBarTick + kBarValueGap) * font, y + 0.36 * font}, fmt::format("{:g}", v), font,
+           ink);
   }
-  c.text({lo.x - 6, (lo.y + hi.y) / 2}, "density φ [weight / m²]", 10, ink, Align::centre, 90.0);
+  // φ's values as the scenario gives them: H is in m⁴·φ (docs/outputs.md).
+  c.text({x0 - kBarLabelGap * font - 0.25 * font, (top + bottom) / 2}, "density φ", font, ink,
+         Align::centre, 90.0);
 }
 
-void MapView::draw_scale_bar(Canvas& c) const {
+void MapView::draw_density_swatch(Canvas& c, Vec2 centre, double font) const {
+  const Vec2 half{0.8 * font, 0.4 * font};
+  if (!uniform_) {
+    Image ramp{16, 1, {}};
+    for (int x = 0; x < ramp.width; ++x)
+      ramp.pixels.push_back(density_colour((x + 0.5) / ramp.width));
+    c.image(ramp, centre - half, centre + half);
+  } else {
+    c.rectangle(centre - half, centre + half, Colour::hex(0xffffff));
+  }
+  c.rectangle(centre - half, centre + half, std::nullopt, Stroke{Marks::ink(), 0.06 * font});
+}
+
+void MapView::draw_scale_bar(Canvas& c, double font) const {
   const Box& b = scenario_.environment->bounds();
-  const double len = tick_step(b.size().x, 5);
-  const Vec2 start{axes_.lo.x + 10, axes_.hi.y - 10};
+  const double len = tick_step(b.size().x, 5), u = font / 10;
+  const Vec2 start{axes_.lo.x + font, axes_.hi.y - font};
   const Vec2 end = start + Vec2{len * px_per_metre(), 0};
-  c.rectangle(start - Vec2{4, 16}, end + Vec2{4, 4}, Colour::hex(0xffffff, 0.8));
-  c.line(start, end, Stroke{Colour::hex(0x000000), 2.0});
-  c.line(start - Vec2{0, 3}, start + Vec2{0, 3}, Stroke{Colour::hex(0x000000), 1.0});
-  c.line(end - Vec2{0, 3}, end + Vec2{0, 3}, Stroke{Colour::hex(0x000000), 1.0});
-  c.text((start + end) * 0.5 - Vec2{0, 5}, fmt::format("{:g} m", len), 9, Colour::hex(0x000000),
+  const Colour black = Colour::hex(0x000000);
+  c.rectangle(start - Vec2{0.4 * font, 1.55 * font}, end + Vec2{0.4 * font, 0.4 * font},
+              Colour::hex(0xffffff, 0.8));
+  c.line(start, end, Stroke{black, 2.0 * u});
+  c.line(start - Vec2{0, 0.3 * font}, start + Vec2{0, 0.3 * font}, Stroke{black, 1.0 * u});
+  c.line(end - Vec2{0, 0.3 * font}, end + Vec2{0, 0.3 * font}, Stroke{black, 1.0 * u});
+  c.text((start + end) * 0.5 - Vec2{0, 0.45 * font}, fmt::format("{:g} m", len), font, black,
          Align::centre);
 }
 

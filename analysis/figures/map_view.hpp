@@ -5,19 +5,28 @@
 
 #include "analysis/figures/axes.hpp"
 #include "analysis/figures/canvas.hpp"
+#include "analysis/figures/layers.hpp"
 #include "scenarios/scenario.hpp"
 
 namespace covsim {
 
 // Sequential colour map for densities: light (low) to dark orange (high), t in [0, 1].
 Colour density_colour(double t);
-// A colour per robot, repeating after 20.
-Colour robot_colour(std::size_t i);
 
 class MapView {
  public:
-  // Ω's box (padded a little) fitted to the picture rectangle [lo, hi].
+  // Ω's box padded a little: the data a map shows.
+  static Box extent(const Scenario& scenario);
+  // The extent's height over its width, kept within [0.3, 1.6] (a map of a long corridor
+  // still has room for its robots).
+  static double aspect(const Scenario& scenario);
+
+  // The extent fitted to the picture rectangle [lo, hi].
   MapView(const Scenario& scenario, Vec2 lo, Vec2 hi);
+  // Not yet placed: a figure that lays itself out around the map places it when it knows
+  // where (the colour bar's width, say, is known before).
+  explicit MapView(const Scenario& scenario);
+  void place(Vec2 lo, Vec2 hi);
   const Axes& axes() const { return axes_; }
   Vec2 to_px(Vec2 world) const { return axes_.to_px(world); }
   double px_per_metre() const { return axes_.px_per_unit(); }
@@ -26,12 +35,18 @@ class MapView {
   // The density over Ω's box, row 0 at the top (empty when uniform).
   const Image& density_image() const { return density_; }
 
-  // Obstacles, the density (clipped to Ω) and the axes.
-  void draw_background(Canvas& c) const;
-  // A vertical colour bar for the density in [lo, hi], labelled; nothing if it is uniform.
-  void draw_colour_bar(Canvas& c, Vec2 lo, Vec2 hi) const;
-  // A bar of a round length in metres at the bottom left of Ω's box.
-  void draw_scale_bar(Canvas& c) const;
+  // Of `layers`: the obstacles and ∂Ω, the density (clipped to Ω) and the axes, in text of
+  // `font` points.
+  void draw_background(Canvas& c, const Layers& layers, double font) const;
+  // The width of a vertical colour bar with its values and label in text of `font` points
+  // (0 when the density is uniform), and the bar drawn in that width from `left`, between
+  // `top` and `bottom`.
+  double colour_bar_width(double font) const;
+  void draw_colour_bar(Canvas& c, double left, double top, double bottom, double font) const;
+  // A legend symbol for the density: a swatch of its colours, or white (uniform).
+  void draw_density_swatch(Canvas& c, Vec2 centre, double font) const;
+  // A bar of a round length in metres at the bottom left of the map.
+  void draw_scale_bar(Canvas& c, double font) const;
 
  private:
   const Scenario& scenario_;

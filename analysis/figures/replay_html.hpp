@@ -1,9 +1,11 @@
 #pragma once
 // DIR/replay.html: a self-contained page (no network, no files besides itself) that plays a
-// run back with a time slider, showing Ω, the robots and their paths so far, the virtual
+// run back with a time slider, titled with the scenario's name, showing Ω with axes and a
+// scale bar, the robots in the figures' colours and their paths so far, the virtual
 // generators, the virtual and real targets, and the Voronoi cells of the generators the
 // controller partitions (the virtual generators; the real positions for the baselines,
-// whose virtual generators follow them).
+// whose virtual generators follow them); beside the map the cost plot and the key, laid out
+// to fit the window. The address's #t=SECONDS opens it at that time.
 //
 // Opened with "?selftest" the page moves its own slider (as a user would: by setting the
 // value and sending an input event), draws, and writes what it drew, or any error, into

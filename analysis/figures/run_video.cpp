@@ -9,14 +9,17 @@
 #include <cerrno>
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "analysis/figures/figures.hpp"
-#include "analysis/figures/map_view.hpp"
+#include "analysis/figures/map_legend.hpp"
+#include "analysis/figures/robot_palette.hpp"
 #include "geometry/voronoi_partition.hpp"
+#include "sim/progress_line.hpp"
 
 extern char** environ;
 
@@ -30,6 +33,9 @@ std::size_t video_frames(double sim_time, const VideoOptions& o) {
 }
 
 namespace {
+
+constexpr const char* kNoFfmpeg =
+    "ffmpeg not found: videos need Debian's ffmpeg (scripts/install-deps)";
 
 // ffmpeg reading raw BGRA frames on its standard input.
 class Encoder {
@@ -73,9 +79,9 @@ class Encoder {
     close(fds[0]);
     if (rc != 0) {
       close(fds[1]);
-      throw std::runtime_error(
-          rc == ENOENT ? "ffmpeg not found: videos need Debian's ffmpeg (scripts/install-deps)"
-                       : std::string("cannot start ffmpeg: ") + std::strerror(rc));
+      throw std::runtime_error(rc == ENOENT
+                                   ? std::string(kNoFfmpeg)
+                                   : std::string("cannot start ffmpeg: ") + std::strerror(rc));
     }
     fd_ = fds[1];
     // A failing ffmpeg closes the pipe: see EPIPE rather than die of SIGPIPE.
@@ -133,87 +139,159 @@ struct Trails {
   }
 };
 
-void draw_frame(Canvas& c, const MapView& view, const Environment& env,
-                const CellIntegrator& integrator, const std::vector<RobotTrack>& tracks,
-                Trails& trails, double t, const std::string& name) {
-  c.rectangle({0, 0}, {c.width(), c.height()}, Colour::hex(0xffffff));
-  view.draw_background(c);
-  std::vector<Vec2> virt;
-  for (const RobotTrack& k : tracks)
-    virt.push_back(k.virtual_generator[k.at(t)]);
-  const double scale = std::clamp(c.width() / 960.0, 0.6, 2.0);
-  c.push_clip(view.to_px(env.rings()));
-  if (!virt.empty()) {
-    const VoronoiPartition cells(integrator, virt, VoronoiPartition::Coincident::split);
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      const auto cell = cells.cell(i);
-      if (cell.size() >= 3)
-        c.stroke(view.to_px({{cell.begin(), cell.end()}}), Stroke{Colour::hex(0x1f5fbf), scale});
+// What a frame draws of the layers asked for: neither virtual paths nor the real positions'
+// cells (a second partition every frame) belong in a video.
+Layers frame_layers(Layers layers) {
+  return layers.remove(Layer::virtual_paths).remove(Layer::real_cells);
+}
+
+// Draws frames in time order: the clock above the map, the axes around it, the legend under
+// it.
+class FrameDrawer {
+ public:
+  FrameDrawer(const Scenario& scenario, const std::vector<RobotTrack>& tracks, int width,
+              const Layers& layers)
+      : scenario_(scenario),
+        tracks_(tracks),
+        layers_(frame_layers(layers)),
+        // Text of 14 pixels in a frame 960 wide, never under 8.
+        font_(std::max(8.0, 14.0 * width / 960.0)),
+        marks_{font_ / 10},
+        view_(scenario),
+        legend_(layers_.has(Layer::legend) ? map_legend(layers_, marks_, view_, font_)
+                                           : Legend({}, font_)),
+        integrator_(*scenario.environment, *scenario.density),
+        name_(scenario_name(scenario.source)) {
+    const double pad = 0.6 * font_;
+    const bool axes = layers_.has(Layer::axes);
+    const double top = pad + (layers_.has(Layer::title) ? 1.4 * font_ : 0);
+    const double left = axes ? axes_left_room(view_.axes(), font_) : pad;
+    const double bottom = axes ? axes_bottom_room(font_) : pad;
+    const double map_w = width - left - pad, map_h = map_w * MapView::aspect(scenario);
+    view_.place({left, top}, {left + map_w, top + map_h});
+    columns_ = legend_.columns_within(width - 2 * pad);
+    const double legend_h = legend_.empty() ? 0 : legend_.size(columns_).y + pad;
+    legend_top_ = top + map_h + bottom;
+    width_ = width;
+    // Even sizes: H.264 in yuv420p needs them.
+    height_ = static_cast<int>(std::lround(legend_top_ + legend_h)) / 2 * 2;
+  }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  void draw(Canvas& c, double t) {
+    c.rectangle({0, 0}, {c.width(), c.height()}, Colour::hex(0xffffff));
+    view_.draw_background(c, layers_, font_);
+    const auto has = [&](Layer l) { return layers_.has(l); };
+    if (has(Layer::cells) && !tracks_.empty()) {
+      std::vector<Vec2> virt;
+      for (const RobotTrack& k : tracks_)
+        virt.push_back(k.virtual_generator[k.at(t)]);
+      const VoronoiPartition cells(integrator_, virt, VoronoiPartition::Coincident::split);
+      c.push_clip(view_.to_px(scenario_.environment->rings()));
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        const auto cell = cells.cell(i);
+        if (cell.size() >= 3) c.stroke(view_.to_px({{cell.begin(), cell.end()}}), marks_.cells());
+      }
+      c.pop_clip();
     }
+    // Trails above the obstacles: a walk along a wall lies on ∂Ω, half hidden by a clip to Ω.
+    trails_.advance(view_, tracks_, t);
+    if (has(Layer::paths))
+      for (std::size_t i = 0; i < tracks_.size(); ++i)
+        c.polyline(trails_.px[i], marks_.path(robot_colour(i)));
+    for (std::size_t i = 0; i < tracks_.size(); ++i) {
+      const RobotTrack& k = tracks_[i];
+      if (k.t.empty()) continue;
+      const std::size_t now = k.at(t);
+      const Colour col = robot_colour(i);
+      if (has(Layer::paths)) marks_.start(c, view_.to_px(k.position[0]), col);
+      if (has(Layer::targets)) marks_.target(c, view_.to_px(k.virtual_target[now]));
+      if (has(Layer::generators)) marks_.generator(c, view_.to_px(k.virtual_generator[now]), col);
+      if (has(Layer::targets) && k.real_target[now] != k.virtual_target[now])
+        marks_.projected_target(c, view_.to_px(k.real_target[now]));
+      const Vec2 p = view_.to_px(k.position[now]);
+      if (has(Layer::robots)) marks_.robot(c, p, col);
+      if (has(Layer::ids)) marks_.id(c, p, i, 0.9 * font_);
+    }
+    if (has(Layer::axes)) view_.draw_scale_bar(c, font_);
+    if (has(Layer::title))
+      c.text({0.6 * font_, 0.6 * font_ + 1.1 * font_}, fmt::format("{}   t = {:.1f} s", name_, t),
+             1.1 * font_, Marks::ink());
+    if (!legend_.empty()) legend_.draw(c, {0.6 * font_, legend_top_}, columns_);
   }
-  c.pop_clip();
-  // Trails above the obstacles: a walk along a wall lies on ∂Ω, half hidden by a clip to Ω.
-  trails.advance(view, tracks, t);
-  for (std::size_t i = 0; i < tracks.size(); ++i)
-    c.polyline(trails.px[i], Stroke{robot_colour(i), 1.5 * scale});
-  for (std::size_t i = 0; i < tracks.size(); ++i) {
-    const RobotTrack& k = tracks[i];
-    const std::size_t now = k.at(t);
-    const Colour col = robot_colour(i);
-    c.cross(view.to_px(k.virtual_target[now]), 3.5 * scale, Stroke{Colour::hex(0x222222), scale});
-    c.square(view.to_px(k.virtual_generator[now]), 2.6 * scale, col);
-    const Vec2 p = view.to_px(k.position[now]);
-    c.circle(p, 4.5 * scale, col, Stroke{Colour::hex(0xffffff), scale});
-    c.text(p + Vec2{5 * scale, -5 * scale}, std::to_string(i), 9 * scale, Colour::hex(0x222222));
-  }
-  c.text({view.axes().lo.x, view.axes().lo.y - 10 * scale},
-         fmt::format("{}   t = {:.1f} s", name, t), 13 * scale, Colour::hex(0x222222));
+
+ private:
+  const Scenario& scenario_;
+  const std::vector<RobotTrack>& tracks_;
+  Layers layers_;
+  double font_;
+  Marks marks_;
+  MapView view_;
+  Legend legend_;
+  CellIntegrator integrator_;
+  std::string name_;
+  Trails trails_;
+  int columns_ = 1, width_ = 0, height_ = 0;
+  double legend_top_ = 0;
+};
+
+std::string lower_extension(const fs::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char ch) { return std::tolower(ch); });
+  return ext;
 }
 
 }  // namespace
 
-void write_run_video(const RunFiles& run, const fs::path& file, const VideoOptions& options) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char ch) { return std::tolower(ch); });
+void check_video_file(const fs::path& file) {
+  const std::string ext = lower_extension(file);
+  if (ext != ".mp4" && ext != ".gif")
+    throw std::runtime_error(file.string() + ": a video is .mp4 or .gif");
+  const char* path = std::getenv("PATH");
+  std::string_view dirs = path != nullptr ? path : "";
+  while (true) {
+    const std::size_t colon = std::min(dirs.find(':'), dirs.size());
+    const fs::path dir(dirs.substr(0, colon).empty() ? "." : dirs.substr(0, colon));
+    if (access((dir / "ffmpeg").c_str(), X_OK) == 0) return;
+    if (colon == dirs.size()) break;
+    dirs.remove_prefix(colon + 1);
+  }
+  throw std::runtime_error(kNoFfmpeg);
+}
+
+void write_run_video(const Scenario& scenario, const CoverageOutcome& outcome,
+                     const std::vector<RobotTrack>& tracks, const fs::path& file,
+                     const VideoOptions& options) {
+  const std::string ext = lower_extension(file);
   if (ext != ".mp4" && ext != ".gif")
     throw std::runtime_error(file.string() + ": a video is .mp4 or .gif");
   if (!(options.fps > 0) || !(options.fps <= 240))
     throw std::runtime_error("video frame rate must be in (0, 240]");
-  const Box& b = run.scenario.environment->bounds();
-  const double aspect = std::clamp(b.size().y / b.size().x, 0.3, 1.6);
-  // Even sizes: H.264 in yuv420p needs them.
-  const int w = std::max(160, options.width) / 2 * 2;
-  const double scale = w / 960.0;
-  const double left = 50 * scale, top = 34 * scale, bottom = 44 * scale, right = 16 * scale;
-  const int h = static_cast<int>(std::lround((w - left - right) * aspect + top + bottom)) / 2 * 2;
-  const MapView view(run.scenario, {left, top}, {w - right, h - bottom});
-  const std::vector<RobotTrack> tracks = run.tracks();
-  const double end = run.outcome.sim_time.seconds();
+  FrameDrawer frames_of(scenario, tracks, std::max(160, options.width) / 2 * 2, options.layers);
+  const int w = frames_of.width(), h = frames_of.height();
+  const double end = outcome.sim_time.seconds();
   const std::size_t frames = video_frames(end, options);
   const double dt = frames > 1 ? end / static_cast<double>(frames - 1) : 0.0;
   const fs::path partial = file.string() + ".partial";
-  const std::string name = scenario_name(run.scenario.source);
   try {
     Encoder encoder(partial, ext.substr(1), w, h, options.fps);
     Canvas canvas = Canvas::raster(w, h);
-    const CellIntegrator integrator(*run.scenario.environment, *run.scenario.density);
-    Trails trails;
-    const bool tty = options.progress && isatty(2);
+    ProgressLine line(options.progress && ProgressLine::stderr_is_terminal());
     for (std::size_t f = 0; f < frames; ++f) {
-      draw_frame(canvas, view, *run.scenario.environment, integrator, tracks, trails,
-                 std::min(end, static_cast<double>(f) * dt), name);
+      frames_of.draw(canvas, std::min(end, static_cast<double>(f) * dt));
       const unsigned char* px = canvas.pixels();
       for (int y = 0; y < h; ++y)
         encoder.write(px + static_cast<std::ptrdiff_t>(y) * canvas.stride(),
                       static_cast<std::size_t>(w) * 4);
-      if (tty) {
-        const int done = static_cast<int>(40 * (f + 1) / frames);
-        fmt::print(stderr, "\rvideo [{}{}] {}/{} frames", std::string(done, '#'),
-                   std::string(40 - done, ' '), f + 1, frames);
-      }
+      if (line.due())
+        line.show(fmt::format("video: frame {} of {} ({:.0f}%), {:.0f} s", f + 1, frames,
+                              100.0 * static_cast<double>(f + 1) / static_cast<double>(frames),
+                              line.seconds()));
     }
-    if (tty) fmt::print(stderr, "\n");
+    // A GIF's palette is made from every frame once they are all in: say so while it is.
+    if (line.drawn()) line.show(fmt::format("video: {} frames in, ffmpeg finishing", frames));
     encoder.finish();
   } catch (...) {
     std::error_code ec;

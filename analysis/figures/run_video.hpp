@@ -1,10 +1,14 @@
 #pragma once
-// A run as a video: frames drawn through the Canvas (Ω and the density, each robot's trail,
-// its virtual generator and target, the virtual generators' current cells, a clock) piped
-// to Debian's ffmpeg, which encodes MP4 (H.264) or GIF by the file's extension.
+// A run as a video: frames drawn through the Canvas (Ω and the density, each robot's trail
+// from its start, its virtual generator and target, the virtual generators' current cells, a
+// legend and a clock: the layers asked for) piped to Debian's ffmpeg, which encodes MP4
+// (H.264) or GIF by the file's extension.
 #include <filesystem>
+#include <vector>
 
-#include "analysis/records/run_files.hpp"
+#include "analysis/figures/layers.hpp"
+#include "analysis/records/robot_track.hpp"
+#include "sim/coverage_run.hpp"
 
 namespace covsim {
 
@@ -12,17 +16,23 @@ struct VideoOptions {
   double fps = 25.0;
   // Simulated seconds per second of video; 0: the run fills about 20 s of video.
   double speedup = 0.0;
-  int width = 960;        // pixels (the height follows Ω's aspect)
-  bool progress = false;  // a progress bar on standard error
+  int width = 960;                // pixels (the height follows Ω's aspect)
+  Layers layers = Layers::all();  // of these, what a frame shows (not virtual paths or real cells)
+  bool progress = false;          // a progress line on stderr, when it is a terminal
 };
 
 // The number of frames a run of `sim_time` seconds gives.
 std::size_t video_frames(double sim_time, const VideoOptions& options);
 
+// Throws std::runtime_error unless `file` can be written as a video: its extension is .mp4
+// or .gif, and ffmpeg is on PATH. Checked before the work a video follows (a run).
+void check_video_file(const std::filesystem::path& file);
+
 // Writes `file` (.mp4 or .gif) only when ffmpeg succeeds (written to a partial file first).
 // Throws std::runtime_error naming the problem: an unknown extension, ffmpeg missing or
 // failing.
-void write_run_video(const RunFiles& run, const std::filesystem::path& file,
+void write_run_video(const Scenario& scenario, const CoverageOutcome& outcome,
+                     const std::vector<RobotTrack>& tracks, const std::filesystem::path& file,
                      const VideoOptions& options);
 
 }  // namespace covsim

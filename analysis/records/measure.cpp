@@ -138,15 +138,15 @@ const std::vector<Measure>& measures() {
               o.robots.push_back(r);
             }
           }),
-      member("cost.virtual", K::number, "", "H of the virtual generators on their partition",
+      member("cost.virtual", K::number, kCostUnit, "H of the virtual generators on their partition",
              &O::cost_virtual)
           .in_runs(2, "cost_virtual")
           .in_summary(),
-      member("cost.real", K::number, "", "H of the real positions on their partition",
+      member("cost.real", K::number, kCostUnit, "H of the real positions on their partition",
              &O::cost_real)
           .in_runs(3, "cost_real")
           .in_summary(),
-      member("cost.real_in_virtual_partition", K::number, "",
+      member("cost.real_in_virtual_partition", K::number, kCostUnit,
              "H of the real positions on the virtual generators' partition",
              &O::cost_real_in_virtual_partition)
           .in_runs(4, "cost_real_in_virtual_partition")

@@ -22,6 +22,11 @@ struct RunMeasures {
   double wall_time = 0.0;
 };
 
+// The unit of the coverage cost H = Σ_i ½ ∫_{V_i ∩ Ω} |x − p_i|² φ(x) dx: squared metres of
+// distance times square metres of area, times φ's values as the scenario gives them (φ has
+// no unit of its own; uniform is 1). Every cost measure, column and figure says this.
+inline constexpr const char* kCostUnit = "m⁴·φ";
+
 struct Measure {
   // Dotted. For a measure of the outcome, its JSON path in final.json
   // ("convergence.time_to_10_percent": the key time_to_10_percent of the object convergence).

@@ -91,9 +91,10 @@ const FieldTable<MetricsSample>& metrics_fields() {
   };
   static const FieldTable<S> t{
       member_field("t", K::number, "s", "sample time", &S::t),
-      member_field("cost_real", K::number, "", "H of the real positions", &S::cost_real),
-      member_field("cost_virtual", K::number, "", "H of the virtual generators", &S::cost_virtual),
-      member_field("cost_real_in_virtual_partition", K::number, "",
+      member_field("cost_real", K::number, kCostUnit, "H of the real positions", &S::cost_real),
+      member_field("cost_virtual", K::number, kCostUnit, "H of the virtual generators",
+                   &S::cost_virtual),
+      member_field("cost_real_in_virtual_partition", K::number, kCostUnit,
                    "H of the real positions on the virtual partition",
                    &S::cost_real_in_virtual_partition),
       member_field("settled", K::integer, "", "robots whose planner has settled", &S::settled),

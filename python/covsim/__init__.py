@@ -91,7 +91,7 @@ def cells(environment, density=None, generators=None):
     """The Voronoi partition of the generators ((n, 2) array, metres) restricted to Ω, without
     a run: per generator a dict with its cell, the convex pieces of cell ∩ Ω (arrays of
     vertices, metres), mass (∫φ, m² for a uniform density), centroid (metres) and cost
-    (½∫|x - g|²φ, m⁴ φ). The arguments are Cells'; for many calls on one Ω keep a Cells."""
+    (½∫|x - g|²φ, m⁴·φ). The arguments are Cells'; for many calls on one Ω keep a Cells."""
     if generators is None:
         raise ValueError("cells: give the generators, an (n, 2) array")
     return Cells(environment, density)(_np.asarray(generators, dtype=float)).to_list()

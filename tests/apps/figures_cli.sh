@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The figures as files other tools read: `covsim run --format` and `covsim plot --format`
-# write well-formed SVG, valid PDF and PNG of the requested width; a Gaussian density is an
+# write well-formed SVG, valid PDF and PNG of the requested width; --layers leaves out what
+# it removes (elements counted in the SVG); a Gaussian density is an
 # image (with its colour bar), not a grid of shapes; office's scene stays under 1 MB;
 # thinned recordings still draw; bad options are errors naming them.
 # Usage: figures_cli.sh COVSIM SOURCE WORK OFFICE_RUN (office_run.sh's folder)
@@ -9,6 +10,11 @@ covsim=$1 source=$2 work=$3 office_run=$4
 py=/usr/bin/python3
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
+bad() {  # bad REGEX ARGS...
+  local want=$1; shift
+  set +e; err=$("$covsim" "$@" 2>&1 >/dev/null); rc=$?; set -e
+  [ $rc -eq 2 ] && [[ $err =~ $want ]] || fail "$* gave exit $rc: $err"
+}
 
 check_svg() { "$py" -c 'import sys, xml.etree.ElementTree as E
 root = E.parse(sys.argv[1]).getroot()
@@ -53,10 +59,10 @@ check_svg u/scene.svg
 check_svg u/cost.svg
 grep -q "glyph" u/scene.svg || fail "scene.svg has no text"
 # Robot paths lie above the obstacles, unclipped: a walk along a wall lies on ∂Ω, where a clip
-# to Ω would hide half of it (robot 0's path: its colour #1f77b4, solid, not filled).
+# to Ω would hide half of it (robot 0's path: its colour #cc6677, solid, not filled).
 "$py" - u/scene.svg <<'PY' || fail "scene.svg clips robot 0's path to Ω"
 import sys, xml.etree.ElementTree as E
-colour = "stroke:rgb(12.156863%,46.666667%,70.588235%);stroke-opacity:1;"
+colour = "stroke:rgb(80%,40%,46.666667%);stroke-opacity:1;"
 found = []
 def walk(node, clipped):
     clipped = clipped or "clip-path" in node.attrib
@@ -72,16 +78,55 @@ PY
 case "$(png_size u/scene.png)" in 900x*) ;; *) fail "scene.png is $(png_size u/scene.png), not 900 wide" ;; esac
 case "$(png_size u/cost.png)" in 900x*) ;; *) fail "cost.png is $(png_size u/cost.png), not 900 wide" ;; esac
 "$covsim" plot u --format png > /dev/null
-case "$(png_size u/scene.png)" in 1752x*) ;; *) fail "default scene.png is $(png_size u/scene.png)" ;; esac
+case "$(png_size u/scene.png)" in 1020x*) ;; *) fail "default scene.png (page: 180 mm, two pixels a point) is $(png_size u/scene.png)" ;; esac
+
+# --layers removes what it leaves out: the paths, dashed virtual paths and IDs are gone from
+# the SVG (counted as elements), the rest stays; a removal is the same as listing the others.
+svg_count() {  # svg_count FILE WHAT: elements of a kind in an SVG
+  "$py" - "$1" "$2" <<'PY'
+import sys, xml.etree.ElementTree as E
+root = E.parse(sys.argv[1]).getroot()
+ns = "{http://www.w3.org/2000/svg}"
+paths = [e for e in root.iter(ns + "path")]
+robot0 = "stroke:rgb(80%,40%,46.666667%)"  # robot 0's colour
+what = sys.argv[2]
+if what == "elements":
+    n = sum(1 for _ in root.iter())
+elif what == "robot0-solid":  # robot 0's path (solid)
+    n = sum(1 for e in paths if robot0 in e.get("style", "") and "stroke-dasharray" not in e.get("style", ""))
+elif what == "robot0-dashed":  # robot 0's virtual generator's path (dashed)
+    n = sum(1 for e in paths if robot0 in e.get("style", "") and "stroke-dasharray" in e.get("style", ""))
+elif what == "glyphs":  # text drawn (each glyph a <use>)
+    n = sum(1 for e in root.iter(ns + "use"))
+print(n)
+PY
+}
+"$covsim" plot u --layers all > /dev/null
+cp u/scene.svg all.svg
+"$covsim" plot u --layers=-virtual-paths > /dev/null
+cp u/scene.svg no-virtual.svg
+[ "$(svg_count all.svg robot0-dashed)" -ge 1 ] || fail "no virtual path of robot 0 in all layers"
+[ "$(svg_count no-virtual.svg robot0-dashed)" -eq 0 ] || fail "--layers=-virtual-paths drew one"
+[ "$(svg_count no-virtual.svg robot0-solid)" -eq "$(svg_count all.svg robot0-solid)" ] ||
+  fail "--layers=-virtual-paths removed more than the virtual paths"
+[ "$(svg_count no-virtual.svg elements)" -lt "$(svg_count all.svg elements)" ] ||
+  fail "--layers=-virtual-paths left as many elements"
+"$covsim" plot u --layers obstacles,paths,robots > /dev/null
+cp u/scene.svg bare.svg
+[ "$(svg_count bare.svg glyphs)" -eq 0 ] || fail "--layers obstacles,paths,robots drew text"
+[ "$(svg_count bare.svg robot0-solid)" -ge 1 ] || fail "--layers obstacles,paths,robots lost the paths"
+[ "$(svg_count bare.svg elements)" -lt "$(svg_count no-virtual.svg elements)" ] ||
+  fail "three layers drew as many elements as twelve"
+bad "--layers: unknown layer \"pathz\"" plot u --layers paths,pathz
+bad "--layers" run "$source/scenarios/u_shape.json" --out v --layers=-all
+bad "--size: expected column, page, talk" plot u --size 12cm
+bad "--size" run "$source/scenarios/u_shape.json" --out v --size 5mm
+bad "--font-size" plot u --font-size 2
+[ ! -e v ] || fail "a bad figure option left a folder behind"
 
 # The options: a window, a robot subset, a title, a log scale; bad values exit 2 naming them.
 "$covsim" plot u --time-window 10,30 --robots 1,3 --title "two robots" --log-cost > /dev/null
 check_svg u/scene.svg
-bad() {  # bad REGEX ARGS...
-  local want=$1; shift
-  set +e; err=$("$covsim" "$@" 2>&1 >/dev/null); rc=$?; set -e
-  [ $rc -eq 2 ] && [[ $err =~ $want ]] || fail "$* gave exit $rc: $err"
-}
 bad "--time-window" plot u --time-window 30,10
 bad "--time-window" plot u --time-window abc
 bad "--robots: robot 9 does not exist" plot u --robots 1,9

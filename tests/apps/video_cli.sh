@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# `covsim plot DIR --video`: an MP4 and a GIF that ffprobe decodes with the expected frame
-# count and size; a bad extension is an error and leaves no file. Skipped (77) without
-# ffmpeg. Usage: video_cli.sh COVSIM SOURCE WORK
+# `covsim plot DIR --video` and `covsim run --video`: an MP4 and a GIF that ffprobe decodes
+# with the expected frame count and size; the legend under the map (a frame without it is
+# shorter); on a terminal a progress line on stderr while encoding; a bad extension is an
+# error and leaves no file. Skipped (77) without ffmpeg. Usage: video_cli.sh COVSIM SOURCE WORK
 set -euo pipefail
 covsim=$1 source=$2 work=$3
 command -v ffmpeg > /dev/null && command -v ffprobe > /dev/null ||
@@ -24,6 +25,36 @@ height=$(echo "$got" | cut -d, -f3)
 got=$(probe u.gif)
 # At 20 simulated seconds per video second: 6.7 intervals, rounded up to 7: 8 frames.
 case "$got" in gif,320,*,8) ;; *) fail "u.gif: $got (expected 8 frames, 320 wide)" ;; esac
+# The legend takes rows under the map: without it (--layers) a frame is shorter.
+"$covsim" plot u --video bare.mp4 --fps 5 --speed 10 --video-width 480 --layers=-legend > /dev/null
+bare=$(probe bare.mp4 | cut -d, -f3)
+[ "$bare" -lt $((height - 20)) ] || fail "a frame without its legend is $bare high, with it $height"
+
+# covsim run --video: the run's outputs, then the video; on a terminal (util-linux's script
+# gives one) a progress line on stderr while it encodes, and nothing of it on stdout.
+command -v script > /dev/null || { echo "skipped: util-linux's script is not installed"; exit 77; }
+script -qec "$covsim run $source/scenarios/u_shape.json --out r --video r.mp4 > r.out" typescript \
+  > /dev/null
+got=$(probe r.mp4)
+# 26.8 s in about 20 s of video at 25 frames per second: 501 frames, 960 wide by default.
+case "$got" in h264,960,*,501) ;; *) fail "run --video r.mp4: $got" ;; esac
+[ -f r/final.json ] && [ -f r/scene.svg ] || fail "run --video left no run folder: $(ls r)"
+grep -q "^wrote .*, r.mp4$" r.out || fail "run --video did not name the video: $(cat r.out)"
+tr '\r' '\n' < typescript | grep -Eq "^video: frame [0-9]+ of 501 \([0-9]+%\)" ||
+  fail "no progress line while encoding: $(tr '\r' '\n' < typescript | head -5)"
+! grep -q "video: frame" r.out || fail "the progress line went to stdout"
+# Piped, no progress line; a bad extension stops the run before it starts, leaving nothing.
+"$covsim" run "$source/scenarios/u_shape.json" --out p --video p.gif --fps 5 --speed 20 \
+  > /dev/null 2> p.err
+case "$(probe p.gif)" in gif,960,*,8) ;; *) fail "run --video p.gif: $(probe p.gif)" ;; esac
+! grep -q "video:" p.err || fail "progress written to a file: $(head -c 200 p.err)"
+set +e
+err=$("$covsim" run "$source/scenarios/u_shape.json" --out q --video q.webm 2>&1 >/dev/null)
+rc=$?
+set -e
+[ $rc -eq 2 ] && [[ $err =~ "--video" ]] && [ ! -e q ] && [ ! -e q.webm ] ||
+  fail "run --video q.webm: exit $rc: $err"
+
 set +e
 err=$("$covsim" plot u --video u.avi 2>&1 >/dev/null)
 rc=$?
