@@ -29,5 +29,21 @@ target_compile_options(covsim_flags INTERFACE
 if(COVSIM_SANITIZE)
   target_compile_options(covsim_flags INTERFACE -fsanitize=address,undefined
                                                 -fno-sanitize-recover=all -fno-omit-frame-pointer)
-  target_link_options(covsim_flags INTERFACE -fsanitize=address,undefined)
+  # One shared sanitizer runtime for the programs, the tests and the Python module: the
+  # interpreter, not built with the sanitizers, loads it first (LD_PRELOAD, COVSIM_ASAN_RUNTIME)
+  # and the programs that Python tests start use the same one. GCC links it shared already.
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libclang_rt.asan-x86_64.so
+                    OUTPUT_VARIABLE COVSIM_ASAN_RUNTIME OUTPUT_STRIP_TRAILING_WHITESPACE)
+    get_filename_component(covsim_asan_dir ${COVSIM_ASAN_RUNTIME} DIRECTORY)
+    # A target with COVSIM_STATIC_ASAN (the libFuzzer targets, whose runtime must come first)
+    # keeps clang's static runtime.
+    set(covsim_shared_asan "$<NOT:$<BOOL:$<TARGET_PROPERTY:COVSIM_STATIC_ASAN>>>")
+    target_link_options(covsim_flags INTERFACE -fsanitize=address,undefined
+                        "$<${covsim_shared_asan}:-shared-libasan;-Wl,-rpath,${covsim_asan_dir}>")
+  else()
+    execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libasan.so
+                    OUTPUT_VARIABLE COVSIM_ASAN_RUNTIME OUTPUT_STRIP_TRAILING_WHITESPACE)
+    target_link_options(covsim_flags INTERFACE -fsanitize=address,undefined)
+  endif()
 endif()

@@ -75,6 +75,11 @@ TraceReader::TraceReader(std::filesystem::path path) : path_(std::move(path)), i
     if (space == std::string::npos) fail("expected '<key> <value>' in the header");
     std::string key = line.substr(0, space);
     std::string value = line.substr(space + 1);
+    // A key twice would leave which value counts to the reader: refused.
+    const bool repeated = (key == "seed" && have_seed) || (key == "scenario_hash" && have_hash) ||
+                          std::any_of(header_.entries.begin(), header_.entries.end(),
+                                      [&](const auto& entry) { return entry.first == key; });
+    if (repeated) fail("the header has '" + key + "' twice");
     if (key == "seed") {
       auto [p, ec] = std::from_chars(value.data(), value.data() + value.size(), header_.seed);
       if (ec != std::errc() || p != value.data() + value.size())
@@ -134,6 +139,10 @@ std::optional<TraceRecord> TraceReader::next() {
   };
   std::int64_t ns = 0;
   field(r.index);
+  // Records are numbered in order from 0: another number means an edited trace, which
+  // would otherwise show as a divergence between records that print the same.
+  if (r.index != records_)
+    fail(fmt::format("event record {} is numbered {}: the trace was edited", records_, r.index));
   field(ns);
   r.time = SimTime::from_ns(ns);
   const char* kind_end = std::find(p, end, ' ');

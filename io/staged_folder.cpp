@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <linux/fs.h>  // RENAME_EXCHANGE
+#include <sys/stat.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
@@ -30,7 +31,40 @@ bool exchange(const fs::path& a, const fs::path& b) {
 fs::path parent_of(const fs::path& p) {
   return p.has_parent_path() ? p.parent_path() : fs::path(".");
 }
+
+// Why `entry` could not be renamed into `into` (a folder on `into_device`), or "" if it can:
+// rename cannot cross file systems (a mount point), and moving a folder rewrites its "..".
+std::string why_unmovable(const fs::path& entry, dev_t into_device) {
+  struct stat st {};
+  if (::lstat(entry.c_str(), &st) != 0) return std::strerror(errno);
+  if (st.st_dev != into_device) return "it is on another file system (a mount point?)";
+  if (S_ISDIR(st.st_mode) && ::access(entry.c_str(), W_OK) != 0)
+    return "it is a folder covsim may not move (not writable)";
+  return "";
+}
 }  // namespace
+
+std::vector<std::string> StagedFolder::entries_to_carry() const {
+  std::vector<std::string> names;
+  std::error_code ec;
+  if (!fs::is_directory(dir_, ec)) return names;
+  struct stat staging {};
+  if (::stat(staging_.c_str(), &staging) != 0)
+    throw std::runtime_error(staging_.string() + ": " + std::strerror(errno));
+  for (const auto& entry : fs::directory_iterator(dir_)) {
+    const std::string name = entry.path().filename().string();
+    if (owned_(name) || fs::exists(staging_ / name)) continue;
+    if (const std::string why = why_unmovable(entry.path(), staging.st_dev); !why.empty())
+      throw std::invalid_argument(dir_.string() + ": holds " + name +
+                                  ", which is not covsim's and cannot be kept in the new "
+                                  "output (" +
+                                  why +
+                                  "); nothing was changed: move it away or choose another "
+                                  "output folder");
+    names.push_back(name);
+  }
+  return names;
+}
 
 StagedFolder::StagedFolder(fs::path dir, std::function<bool(const std::string&)> owned)
     : dir_(std::move(dir)),
@@ -53,10 +87,17 @@ StagedFolder::StagedFolder(fs::path dir, std::function<bool(const std::string&)>
   if (ec)
     throw std::invalid_argument(dir_.string() + ": cannot create directory " + staging_.string() +
                                 ": " + ec.message());
+  // A user's entry that could not be carried over refuses the folder now, before the work.
+  try {
+    (void)entries_to_carry();
+  } catch (...) {
+    fs::remove_all(staging_, ec);
+    throw;
+  }
 }
 
 StagedFolder::~StagedFolder() {
-  if (committed_) return;
+  if (committed_ || stranded_) return;  // stranded: a user's entry is still in it
   std::error_code ignored;
   fs::remove_all(staging_, ignored);
 }
@@ -69,15 +110,15 @@ void StagedFolder::commit() {
   if (!fs::exists(dir_)) {
     fs::rename(staging_, dir_);
   } else {
-    // Carry over what is not this folder's output; put it back if the swap fails.
+    // Carry over what is not this folder's output, every entry checked first; put back what
+    // was carried if anything after fails.
+    const std::vector<std::string> to_carry = entries_to_carry();
     std::vector<std::string> carried;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      const std::string name = entry.path().filename().string();
-      if (owned_(name) || fs::exists(staging_ / name)) continue;
-      fs::rename(entry.path(), staging_ / name);
-      carried.push_back(name);
-    }
     try {
+      for (const std::string& name : to_carry) {
+        fs::rename(dir_ / name, staging_ / name);
+        carried.push_back(name);
+      }
       if (exchange(staging_, dir_)) {
         fs::remove_all(staging_);  // now the old folder
       } else {
@@ -85,12 +126,19 @@ void StagedFolder::commit() {
         fs::rename(staging_, dir_);
         fs::remove_all(replaced_);
       }
-    } catch (...) {
+    } catch (const std::exception& e) {
       std::error_code ignored;
       if (!fs::exists(dir_, ignored)) fs::rename(replaced_, dir_, ignored);
-      for (const std::string& name : carried)
-        fs::rename(staging_ / name, dir_ / name, ignored);
-      throw;
+      std::string left;
+      for (const std::string& name : carried) {
+        std::error_code ec;
+        fs::rename(staging_ / name, dir_ / name, ec);
+        if (ec) left += (left.empty() ? "" : ", ") + name;
+      }
+      if (left.empty()) throw;
+      stranded_ = true;  // never removed with the user's entries in it
+      throw std::runtime_error(std::string(e.what()) + "; " + left + " could not be put back in " +
+                               dir_.string() + " and are in " + staging_.string());
     }
   }
   sync_to_disk(parent_of(dir_));

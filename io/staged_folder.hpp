@@ -5,10 +5,13 @@
 // RENAME_EXCHANGE; on a file system without it, two renames with the old folder kept as
 // "DIR.replaced" until the new one is in place), so DIR never holds old and new files mixed.
 // Entries of the old DIR that are not `owned` (a user's notes, a video they made) are
-// carried into the new one. Destroyed without commit, the staging folder is removed.
+// carried into the new one, after each is checked to be movable (on the same file system;
+// a folder writable): an entry that is not refuses the folder at construction and at commit,
+// with nothing moved. Destroyed without commit, the staging folder is removed.
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace covsim {
 
@@ -28,9 +31,14 @@ class StagedFolder {
   void commit();
 
  private:
+  // The entries of an existing DIR to carry over, each checked to be movable; throws
+  // std::invalid_argument naming the first that is not, before anything moves.
+  std::vector<std::string> entries_to_carry() const;
+
   std::filesystem::path dir_, staging_, replaced_;
   std::function<bool(const std::string&)> owned_;
   bool committed_ = false;
+  bool stranded_ = false;
 };
 
 }  // namespace covsim

@@ -51,8 +51,12 @@ TraceHeader trace_header_for(const Scenario& scenario, const std::filesystem::pa
   header.seed = scenario.seed.value_or(0);
   const std::string json = scenario.json.dump();
   header.scenario_hash = fnv1a64(json);
-  header.entries = {{"scenario", json},
-                    {"scenario_dir", std::filesystem::absolute(scenario_dir).string()}};
+  header.entries = {
+      {"scenario", json},
+      // "u_shape.json" has an empty folder: the working one
+      {"scenario_dir", (scenario_dir.empty() ? std::filesystem::current_path()
+                                             : std::filesystem::absolute(scenario_dir))
+                           .string()}};
   add_provenance(header);
   return header;
 }

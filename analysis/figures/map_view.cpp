@@ -103,11 +103,21 @@ constexpr double kBarGap = 0.7, kBarLabel = 1.2, kBarLabelGap = 0.3, kBar = 0.9,
                  kBarValueGap = 0.25;
 }  // namespace
 
+std::vector<double> MapView::colour_bar_ticks() const {
+  // Counted, not stepped until past the top: a density whose peak the raster missed (a
+  // very narrow Gaussian) has no positive maximum, and a step of 0 would never get there.
+  std::vector<double> ticks{0.0};
+  const double step = tick_step(density_max_, 4);
+  if (!(density_max_ > 0) || !std::isfinite(density_max_) || !(step > 0)) return ticks;
+  for (int k = 1; k <= 100 && k * step <= density_max_ * (1 + 1e-9); ++k)
+    ticks.push_back(k * step);
+  return ticks;
+}
+
 double MapView::colour_bar_width(double font) const {
   if (uniform_) return 0;
   double widest = 0;
-  const double step = tick_step(density_max_, 4);
-  for (double v = 0; v <= density_max_ * (1 + 1e-9); v += step)
+  for (const double v : colour_bar_ticks())
     widest = std::max(widest, text_width(fmt::format("{:g}", v), font));
   return (kBarGap + kBarLabel + kBarLabelGap + kBar + kBarTick + kBarValueGap + 0.2) * font +
          widest;
@@ -124,9 +134,8 @@ void MapView::draw_colour_bar(Canvas& c, double left, double top, double bottom,
   const Colour ink = Marks::ink();
   const double u = font / 10;
   c.rectangle({x0, top}, {x1, bottom}, std::nullopt, Stroke{ink, 0.6 * u});
-  const double step = tick_step(density_max_, 4);
-  for (double v = 0; v <= density_max_ * (1 + 1e-9); v += step) {
-    const double y = bottom - (bottom - top) * v / density_max_;
+  for (const double v : colour_bar_ticks()) {
+    const double y = bottom - (bottom - top) * (density_max_ > 0 ? v / density_max_ : 0.0);
     c.line({x1, y}, {x1 + kBarTick * font, y}, Stroke{ink, 0.6 * u});
     c.text({x1 + (kBarTick + kBarValueGap) * font, y + 0.36 * font}, fmt::format("{:g}", v), font,
            ink);

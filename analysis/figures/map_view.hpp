@@ -2,6 +2,7 @@
 // Ω drawn on a picture: its obstacles, the density as a colour map with its colour bar, axes
 // in metres and a scale bar. The scene and every video frame share it.
 #include <string>
+#include <vector>
 
 #include "analysis/figures/axes.hpp"
 #include "analysis/figures/canvas.hpp"
@@ -42,6 +43,8 @@ class MapView {
   // (0 when the density is uniform), and the bar drawn in that width from `left`, between
   // `top` and `bottom`.
   double colour_bar_width(double font) const;
+  // The colour bar's tick values: 0, then about four steps up to the density's maximum.
+  std::vector<double> colour_bar_ticks() const;
   void draw_colour_bar(Canvas& c, double left, double top, double bottom, double font) const;
   // A legend symbol for the density: a swatch of its colours, or white (uniform).
   void draw_density_swatch(Canvas& c, Vec2 centre, double font) const;

@@ -14,6 +14,7 @@
 #include "analysis/sweep/sweep_folder.hpp"
 #include "io/atomic_file.hpp"
 #include "io/interrupt.hpp"
+#include "scenarios/scenario_error.hpp"
 #include "sim/coverage_run.hpp"
 #include "sim/metrics_sampler.hpp"
 #include "sim/provenance.hpp"
@@ -199,7 +200,12 @@ std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const f
     for (const std::string& line : diffs)
       fmt::print(stderr, "  {}\n", line);
   }
-  merged = sweep_from_json(first.sweep);
+  try {
+    merged = sweep_from_json(first.sweep);
+  } catch (const std::exception& e) {  // nlohmann's type and key errors too
+    throw ScenarioError((dirs.front() / "sweep.json").string() +
+                        ": not a sweep covsim wrote: " + e.what());
+  }
   // Every run's result from the first folder that holds it.
   const std::size_t total = merged.runs().size();
   std::vector<SweepResult> results;

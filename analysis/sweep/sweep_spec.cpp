@@ -228,6 +228,17 @@ SweepSpec sweep_from_json(const nlohmann::json& j) {
   spec.parameters = j.at("parameters").get<std::vector<std::string>>();
   spec.settings = j.at("settings").get<std::vector<std::vector<nlohmann::json>>>();
   spec.seeds = j.at("seeds").get<std::vector<std::uint64_t>>();
+  // Written by covsim, but read from a folder a user may have edited or mixed.
+  for (std::size_t s = 0; s < spec.settings.size(); ++s) {
+    if (spec.settings[s].size() != spec.parameters.size())
+      throw std::invalid_argument(fmt::format("setting {} has {} values for {} parameters", s,
+                                              spec.settings[s].size(), spec.parameters.size()));
+  }
+  if (spec.settings.empty() || spec.seeds.empty() ||
+      spec.settings.size() > kMaxSweepRuns / spec.seeds.size())
+    throw std::invalid_argument(fmt::format("{} settings and {} seeds: expected 1 to {} runs",
+                                            spec.settings.size(), spec.seeds.size(),
+                                            kMaxSweepRuns));
   return spec;
 }
 

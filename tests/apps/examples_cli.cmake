@@ -2,7 +2,8 @@
 # through both routes: their own program (linking covsim::covsim, registering the component,
 # running the planner contract suite or a sweep) and the installed covsim with --plugin.
 #   -DBUILD=<covsim build dir> -DSOURCE=<covsim source> -DWORK=<scratch> -DCXX=<compiler>
-#   [-DPYTHON=<interpreter> -DPYTHON_SITE=<where the package installs, under the prefix>]
+#   [-DPYTHON=<interpreter> -DPYTHON_SITE=<where the package installs, under the prefix>
+#    -DPRELOAD=<sanitizer runtime to preload, for a sanitized build>]
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(prefix ${WORK}/prefix)
@@ -113,8 +114,12 @@ if(PYTHON)
   file(WRITE ${WORK}/probe.py "import covsim\nprint(covsim.__file__)\n"
        "s = covsim.Scenario.from_file('${SOURCE}/scenarios/u_shape.json')\n"
        "print(covsim.Simulation(s).run()['fingerprint'])\n")
+  set(preload)
+  if(PRELOAD)  # a sanitized build: its runtime first, the interpreter's own leaks not counted
+    set(preload LD_PRELOAD=${PRELOAD} ASAN_OPTIONS=detect_leaks=0)
+  endif()
   run("the installed Python package" ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_SITE}
-      ${PYTHON} ${WORK}/probe.py)
+      ${preload} ${PYTHON} ${WORK}/probe.py)
   if(NOT out MATCHES "^${prefix}/${PYTHON_SITE}/covsim/__init__.py\n${expected}\n$")
     message(FATAL_ERROR "the installed Python package: ${out} (want fingerprint ${expected})")
   endif()

@@ -87,3 +87,16 @@ execute_process(COMMAND ${COVSIM} replay ${WORK}/t.trace RESULT_VARIABLE rc OUTP
 if(NOT rc EQUAL 0 OR NOT out MATCHES "replay matches: ${events} events, fingerprint ${fp}")
   message(FATAL_ERROR "replay: expected a match of ${events} events with fingerprint ${fp}, got ${rc}: ${out} ${err}")
 endif()
+# Relative names from the scenario's own folder, as a user in it types them.
+file(MAKE_DIRECTORY ${WORK}/here)
+file(COPY ${SOURCE}/scenarios/u_shape.json DESTINATION ${WORK}/here)
+execute_process(COMMAND ${COVSIM} run u_shape.json --out out --trace t.trace
+                WORKING_DIRECTORY ${WORK}/here RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK}/here/t.trace)
+  message(FATAL_ERROR "run u_shape.json --trace t.trace in the scenario's folder: exit ${rc}: ${err}")
+endif()
+execute_process(COMMAND ${COVSIM} replay t.trace WORKING_DIRECTORY ${WORK}/here
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "replay matches")
+  message(FATAL_ERROR "replay of a trace with relative names: exit ${rc}: ${out} ${err}")
+endif()

@@ -158,6 +158,15 @@ TEST_CASE("malformed traces are reported with file and line", "[trace]") {
   expect_error("covsim-trace 1\nseed 1\nevents\n", "scenario_hash");
   expect_error("covsim-trace 1\nseed 1\nscenario_hash 0000000000000000\nevents\n0 5 tick\n",
                ":5: malformed");
+  // A header key twice, and a record numbered out of order: edited, not a divergence.
+  expect_error("covsim-trace 1\nseed 1\nseed 2\nscenario_hash 0000000000000000\nevents\n",
+               ":3: the header has 'seed' twice");
+  expect_error("covsim-trace 1\nseed 1\nscenario_hash 0000000000000000\nnote a\nnote b\nevents\n",
+               ":5: the header has 'note' twice");
+  expect_error(
+      "covsim-trace 1\nseed 1\nscenario_hash 0000000000000000\nevents\n"
+      "0 5 tick 1 0000000000000001\n2 7 tick 1 0000000000000002\n",
+      ":6: event record 1 is numbered 2: the trace was edited");
   expect_error("covsim-trace 1\nseed 1\nscenario_hash 0000000000000000\nevents\n0 5 tick 1 12\n",
                "fingerprint");
 }

@@ -34,6 +34,8 @@ def main(source, build, covsim, python):
 
     if python:
         env = dict(os.environ, PYTHONPATH=str(build / "python"))
+        if os.environ.get("COVSIM_PRELOAD"):  # a sanitized build's module
+            env.update(LD_PRELOAD=os.environ["COVSIM_PRELOAD"], ASAN_OPTIONS="detect_leaks=0")
         got = subprocess.run([python, "-c", "import covsim; print(covsim.__version__)"],
                              capture_output=True, text=True, env=env)
         expect("covsim.__version__", got.stdout.strip() or got.stderr.strip(), version)

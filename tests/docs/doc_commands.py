@@ -77,7 +77,13 @@ class Checker:
         (self.run_dir / "build").symlink_to(build)
         bin_dir = work / "bin"
         bin_dir.mkdir()
-        (bin_dir / "python3").symlink_to(python)
+        preload = os.environ.get("COVSIM_PRELOAD")  # a sanitized build's module needs it first
+        if preload:
+            (bin_dir / "python3").write_text(
+                f"#!/bin/sh\nLD_PRELOAD={preload} ASAN_OPTIONS=detect_leaks=0 exec {python} \"$@\"\n")
+            (bin_dir / "python3").chmod(0o755)
+        else:
+            (bin_dir / "python3").symlink_to(python)
         (bin_dir / "covsim").symlink_to(self.covsim)
         self.env = dict(os.environ, PATH=f"{bin_dir}:{os.environ['PATH']}", **DOC_ENV)
         self.env.pop("PYTHONPATH", None)

@@ -369,6 +369,19 @@ TEST_CASE("shards plus merge equal the whole sweep", "[sweep]") {
                     Catch::Contains("different sweep"));
   CHECK_THROWS_WITH(run_sweep(other, shards[0], SweepOptions{1, false, 0, 1}),
                     Catch::Contains("different sweep"));
+  // Shards whose sweep.json was edited so that a setting has fewer values than parameters:
+  // refused as bad input naming the file, not read past the list's end.
+  std::vector<fs::path> edited;
+  for (std::size_t k = 0; k < 2; ++k) {
+    edited.push_back(dir / fmt::format("edited{}", k));
+    fs::create_directories(edited.back());
+    nlohmann::json j = nlohmann::json::parse(std::ifstream(shards[k] / "sweep.json"));
+    j["settings"][0].erase(j["settings"][0].size() - 1);
+    std::ofstream(edited.back() / "sweep.json") << j.dump();
+  }
+  CHECK_THROWS_AS(merge_sweeps(edited, dir / "edited-out", unused), ScenarioError);
+  CHECK_THROWS_WITH(merge_sweeps(edited, dir / "edited-out", unused),
+                    Catch::Contains("edited0/sweep.json: not a sweep covsim wrote: setting 0 has"));
 }
 
 TEST_CASE("runs record their communication, and seeds deploy robots apart", "[sweep]") {

@@ -1,0 +1,76 @@
+// AtomicFile (io/atomic_file): whole or absent for a regular file; a symbolic link kept as a
+// link with its target written; a FIFO (as a device) written through, never replaced.
+#include <catch2/catch.hpp>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <future>
+#include <sstream>
+#include <string>
+
+#include "io/atomic_file.hpp"
+
+namespace fs = std::filesystem;
+using covsim::AtomicFile;
+
+namespace {
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d =
+      fs::temp_directory_path() / ("covsim-atomic-" + std::to_string(getpid()) + "-" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+}  // namespace
+
+TEST_CASE("a regular file appears only when committed", "[atomic_file]") {
+  const fs::path d = fresh_dir("regular");
+  {
+    AtomicFile f(d / "a.txt");
+    f.stream() << "one";
+    CHECK_FALSE(fs::exists(d / "a.txt"));
+  }
+  CHECK_FALSE(fs::exists(d / "a.txt"));
+  CHECK_FALSE(fs::exists(d / "a.txt.partial"));
+  AtomicFile f(d / "a.txt");
+  f.stream() << "two";
+  f.commit();
+  CHECK(slurp(d / "a.txt") == "two");
+}
+
+TEST_CASE("a symbolic link stays a link; the file it points to is written", "[atomic_file]") {
+  const fs::path d = fresh_dir("link");
+  std::ofstream(d / "target.txt") << "old";
+  fs::create_symlink("target.txt", d / "link.txt");
+  AtomicFile f(d / "link.txt");
+  f.stream() << "new";
+  f.commit();
+  CHECK(fs::is_symlink(fs::symlink_status(d / "link.txt")));
+  CHECK(slurp(d / "target.txt") == "new");
+  CHECK_FALSE(fs::exists(d / "link.txt.partial"));
+}
+
+TEST_CASE("a FIFO is written through, not replaced by a regular file", "[atomic_file]") {
+  const fs::path d = fresh_dir("fifo");
+  const fs::path fifo = d / "pipe";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  auto reader = std::async(std::launch::async, [&] { return slurp(fifo); });
+  {
+    AtomicFile f(fifo);
+    f.stream() << "through the pipe";
+    f.commit();
+  }
+  CHECK(reader.get() == "through the pipe");
+  CHECK(fs::is_fifo(fs::status(fifo)));
+  CHECK_FALSE(fs::exists(d / "pipe.partial"));
+}
