@@ -9,6 +9,7 @@
 #include "apps/commands.hpp"
 #include "geometry/geometry_error.hpp"
 #include "geometry/voronoi_partition.hpp"
+#include "io/interrupt.hpp"
 #include "scenarios/input_file.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
@@ -49,6 +50,9 @@ void add_cells_command(CLI::App& app) {
     nlohmann::ordered_json out;
     out["cells"] = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < partition->size(); ++i) {
+      // Hundreds of thousands of cells take seconds: SIGINT and SIGTERM stop between cells.
+      if (i % 1024 == 0)
+        if (const int signal = pending_interrupt()) throw Interrupted(signal);
       const CellSummary s = partition->summary(i);
       nlohmann::ordered_json cell;
       cell["mass"] = s.mass;

@@ -25,6 +25,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A run's series that could not be written (a full disk): the machine's failure, not the
+// run's, so the run is not recorded as done and a resumed sweep runs it again.
+struct SeriesWriteError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // One run, sampled for its communication measures; with keep_series its samples are kept as
 // DIR/runs/<index>.metrics.csv.
 SweepResult execute(const SweepSpec& spec, const SweepRun& run, const fs::path& dir,
@@ -41,14 +47,20 @@ SweepResult execute(const SweepSpec& spec, const SweepRun& run, const fs::path& 
     m.outcome = run_coverage(s, &sampler);
     m.communication = summarize_communication(sampler.samples());
     if (keep_series) {
-      AtomicFile series(dir / "runs" / fmt::format("{}.metrics.csv", run.index));
-      series.stream() << csv_header(metrics_fields()) << '\n';
-      for (const MetricsSample& sample : sampler.samples())
-        series.stream() << csv_row(metrics_fields(), sample) << '\n';
-      series.commit();
+      try {
+        AtomicFile series(dir / "runs" / fmt::format("{}.metrics.csv", run.index));
+        series.stream() << csv_header(metrics_fields()) << '\n';
+        for (const MetricsSample& sample : sampler.samples())
+          series.stream() << csv_row(metrics_fields(), sample) << '\n';
+        series.commit();
+      } catch (const std::exception& e) {
+        throw SeriesWriteError(e.what());
+      }
     }
   } catch (const Interrupted&) {
     throw;  // the run is abandoned, not failed: a resumed sweep runs it again
+  } catch (const SeriesWriteError&) {
+    throw;
   } catch (const std::exception& e) {
     r.error = e.what();
   }
@@ -124,6 +136,7 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
     for (std::size_t t = next++; t < todo.size(); t = next++) {
       const std::size_t k = todo[t];
       SweepResult r;
+      bool recorded = true;
       try {
         r = execute(spec, mine[k], dir, options.keep_series);
       } catch (const Interrupted&) {
@@ -131,9 +144,13 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
         if (!interrupted) interrupted = std::current_exception();
         next = todo.size();
         return;
+      } catch (const SeriesWriteError& e) {  // not recorded: a resumed sweep runs it again
+        r.index = mine[k].index;
+        r.error = fmt::format("cannot write its metrics series: {}", e.what());
+        recorded = false;
       }
       try {
-        write_result(dir, r);
+        if (recorded) write_result(dir, r);
       } catch (const std::exception& e) {  // a full disk, say: this run's error
         r.error = fmt::format("cannot write its result: {}", e.what());
         r.values.clear();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "io/interrupt.hpp"
 #include "scenarios/input_file.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario.hpp"
@@ -27,6 +28,8 @@ void validate_settings(const SweepSpec& spec, const std::vector<std::string>& li
   };
   const std::string inline_source = spec.source + " (the scenario)";
   for (std::size_t k = 0; k < spec.settings.size(); ++k) {
+    // A large grid takes a while to check: SIGINT and SIGTERM stop it between settings.
+    if (const int signal = pending_interrupt()) throw Interrupted(signal);
     const SweepRun run{0, k, spec.seeds.front(), spec.settings[k]};
     try {
       parse_scenario(spec.scenario_for(run), named ? named->source : inline_source,

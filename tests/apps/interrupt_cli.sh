@@ -81,4 +81,20 @@ a, b = ([{k: v for k, v in r.items() if k not in clock} for r in csv.DictReader(
         for f in sys.argv[1:])
 assert len(a) == 4 and a == b, (a, b)
 PY
+# Checking a large grid before anything runs stops at SIGINT too, within seconds (20 000
+# settings of the office scenario take about a minute to check).
+ranges=$(seq -s, 1 200)
+speeds=$(awk 'BEGIN { for (k = 1; k <= 100; ++k) printf "%s%g", (k > 1 ? "," : ""), k / 1000 }')
+printf '{"scenario": "%s", "grid": {"sensor.range": [%s], "robots.max_speed": [%s]}, "seeds": [1]}\n' \
+  "$office" "$ranges" "$speeds" > big.json
+"$covsim" sweep big.json --out big > out.txt 2> err.txt &
+pid=$!
+sleep 2
+kill -INT $pid
+signalled=$(date +%s)
+set +e; wait $pid; rc=$?; set -e
+[ "$rc" -eq 130 ] || fail "SIGINT while a sweep is checked: exit $rc: $(tail -2 err.txt)"
+[ $(( $(date +%s) - signalled )) -le 5 ] ||
+  fail "the sweep took $(( $(date +%s) - signalled )) s to stop after SIGINT"
+[ ! -e big/sweep.json ] || fail "the check was over before the signal: make the grid larger"
 echo "interrupts ok"

@@ -160,6 +160,25 @@ TEST_CASE("a rerun skips finished runs and redoes missing ones", "[sweep]") {
   CHECK(comparable(first) == comparable(second));
 }
 
+TEST_CASE("a run whose series cannot be written is not recorded, and a rerun redoes it",
+          "[sweep]") {
+  const fs::path dir = temp_dir("series-full");
+  const SweepSpec spec = load_sweep(write_sweep(dir, kSweep));
+  // Run 2's series cannot be put in place (its name is taken by a folder), as on a full disk.
+  fs::create_directories(dir / "out" / "runs" / "2.metrics.csv");
+  const auto first = run_sweep(spec, dir / "out", SweepOptions{1, false, 0, 1, true});
+  REQUIRE(first[2].error);
+  CHECK_THAT(*first[2].error, Catch::Contains("cannot write its metrics series"));
+  CHECK_FALSE(fs::exists(dir / "out" / "runs" / "2.json"));
+  CHECK(fs::exists(dir / "out" / "runs" / "1.json"));
+  // Space freed: the rerun runs it, and only it.
+  fs::remove(dir / "out" / "runs" / "2.metrics.csv");
+  const auto second = run_sweep(spec, dir / "out", SweepOptions{1, false, 0, 1, true});
+  CHECK_FALSE(second[2].error);
+  CHECK(fs::is_regular_file(dir / "out" / "runs" / "2.metrics.csv"));
+  CHECK(fs::exists(dir / "out" / "runs" / "2.json"));
+}
+
 TEST_CASE("a failing run is recorded and the sweep goes on", "[sweep]") {
   const fs::path dir = temp_dir("failure");
   SweepSpec spec = load_sweep(write_sweep(
