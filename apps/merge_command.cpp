@@ -12,6 +12,7 @@
 #include "analysis/sweep/sweep_runner.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "scenarios/scenario_error.hpp"
 
 namespace covsim::app {
 
@@ -36,9 +37,10 @@ void add_merge_command(CLI::App& app) {
     std::vector<SweepResult> results;
     try {
       // --group is checked before anything is written.
-      if (!dirs.empty())
-        check_chart_group(sweep_from_json(read_sweep_folder(dirs.front()).sweep), opts->group);
+      if (!dirs.empty()) check_chart_group(sweep_of_folder(dirs.front()), opts->group);
       results = merge_sweeps(dirs, opts->out, spec);
+    } catch (const ScenarioError&) {
+      throw;                             // names the file and what was expected
     } catch (const std::exception& e) {  // runtime_error, or invalid_argument for --group
       throw InputError(e.what());
     }

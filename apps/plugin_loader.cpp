@@ -30,7 +30,8 @@ void load_plugins(const std::vector<std::string>& plugins) {
                       "file, named by its path)",
                       given));
     const std::string file = path.string();
-    if (!loaded.insert(file).second) continue;
+    // One library once, however it is named (./p.so, p.so, a link to it).
+    if (!loaded.insert(std::filesystem::weakly_canonical(path, ec).string()).second) continue;
     void* lib = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (lib == nullptr)
       throw InputError(fmt::format("--plugin {}: cannot load it: {}", given, dlerror()));

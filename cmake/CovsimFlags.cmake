@@ -33,8 +33,18 @@ if(COVSIM_SANITIZE)
   # interpreter, not built with the sanitizers, loads it first (LD_PRELOAD, COVSIM_ASAN_RUNTIME)
   # and the programs that Python tests start use the same one. GCC links it shared already.
   if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
-    execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libclang_rt.asan-x86_64.so
-                    OUTPUT_VARIABLE COVSIM_ASAN_RUNTIME OUTPUT_STRIP_TRAILING_WHITESPACE)
+    # The runtime's name: per architecture (clang 14), or in a per-target folder (newer).
+    foreach(name libclang_rt.asan-${CMAKE_SYSTEM_PROCESSOR}.so libclang_rt.asan.so)
+      execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=${name}
+                      OUTPUT_VARIABLE COVSIM_ASAN_RUNTIME OUTPUT_STRIP_TRAILING_WHITESPACE)
+      if(IS_ABSOLUTE "${COVSIM_ASAN_RUNTIME}" AND EXISTS "${COVSIM_ASAN_RUNTIME}")
+        break()
+      endif()
+    endforeach()
+    if(NOT IS_ABSOLUTE "${COVSIM_ASAN_RUNTIME}" OR NOT EXISTS "${COVSIM_ASAN_RUNTIME}")
+      message(FATAL_ERROR "COVSIM_SANITIZE: ${CMAKE_CXX_COMPILER} names no shared ASan runtime "
+                          "(libclang_rt.asan*.so), which the Python module and the programs share")
+    endif()
     get_filename_component(covsim_asan_dir ${COVSIM_ASAN_RUNTIME} DIRECTORY)
     # A target with COVSIM_STATIC_ASAN (the libFuzzer targets, whose runtime must come first)
     # keeps clang's static runtime.

@@ -9,18 +9,34 @@ namespace covsim {
 
 namespace fs = std::filesystem;
 
+namespace {
+// Where a chain of symbolic links ends (the path itself if it is none), each link's text
+// taken relative to its own folder; the end may not exist yet (a dangling link).
+fs::path link_target(fs::path p) {
+  for (int hops = 0; hops < 40; ++hops) {
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
+    const fs::path text = fs::read_symlink(p, ec);
+    if (ec) throw std::runtime_error(p.string() + ": cannot read the link: " + ec.message());
+    p = text.is_absolute() ? text : p.parent_path() / text;
+  }
+  throw std::runtime_error(p.string() + ": too many levels of symbolic links");
+}
+}  // namespace
+
 AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)), target_(path_) {
   std::error_code ec;
-  // A symbolic link stays one: the file it points to is what is written.
-  if (fs::is_symlink(fs::symlink_status(path_, ec))) {
-    target_ = fs::weakly_canonical(path_, ec);
-    if (ec) throw std::runtime_error(path_.string() + ": cannot follow the link: " + ec.message());
-  }
-  // A device, a FIFO or a socket (/dev/null, a pipe) is written through, never replaced.
-  const fs::file_status st = fs::status(target_, ec);
+  // A device, a FIFO or a socket (/dev/null, /dev/stdout on a pipe), directly or through
+  // links, is written through as given, never replaced.
+  const fs::file_status st = fs::status(path_, ec);
   through_ = fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st);
-  if (!through_) partial_ = target_.string() + ".partial";
-  out_.open(through_ ? target_ : partial_, std::ios::binary | std::ios::trunc);
+  // A symbolic link stays one: the file it points to is what is written, even if it does
+  // not exist yet.
+  if (!through_) {
+    target_ = link_target(path_);
+    partial_ = target_.string() + ".partial";
+  }
+  out_.open(through_ ? path_ : partial_, std::ios::binary | std::ios::trunc);
   if (!out_) throw std::runtime_error(path_.string() + ": cannot open for writing");
 }
 

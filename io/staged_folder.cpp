@@ -72,15 +72,36 @@ StagedFolder::StagedFolder(fs::path dir, std::function<bool(const std::string&)>
       replaced_(dir_.string() + ".replaced"),
       owned_(std::move(owned)) {
   std::error_code ec;
-  // What a killed run left: a staging folder, or an old folder not yet removed (DIR itself
-  // is then the complete new one, or, if DIR is missing, the old one is put back).
-  fs::remove_all(staging_, ec);
+  // What a killed run left: an old folder not yet removed (DIR itself is then the complete
+  // new one, or, if DIR is missing, the old one is put back) and a staging folder, which may
+  // hold a user's entries carried into it: those go back into DIR before it is removed.
   if (fs::exists(replaced_, ec)) {
     if (!fs::exists(dir_, ec))
       fs::rename(replaced_, dir_, ec);
     else
       fs::remove_all(replaced_, ec);
   }
+  if (fs::is_directory(staging_, ec)) {
+    std::vector<std::string> users;
+    for (const auto& entry : fs::directory_iterator(staging_, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (!owned_(name)) users.push_back(name);
+    }
+    if (!users.empty() && !fs::exists(dir_, ec)) fs::create_directory(dir_, ec);
+    for (const std::string& name : users) {
+      const fs::path entry = staging_ / name;
+      if (fs::exists(dir_ / name))
+        throw std::invalid_argument(staging_.string() + " holds " + name +
+                                    ", left by an earlier run, and " + dir_.string() +
+                                    " has an entry of that name: move one of them away first");
+      fs::rename(entry, dir_ / name, ec);
+      if (ec)
+        throw std::invalid_argument(staging_.string() + " holds " + name +
+                                    ", left by an earlier run, which cannot be put back in " +
+                                    dir_.string() + ": " + ec.message());
+    }
+  }
+  fs::remove_all(staging_, ec);
   if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec))
     throw std::invalid_argument(dir_.string() + ": exists and is not a directory");
   fs::create_directories(staging_, ec);
@@ -114,17 +135,19 @@ void StagedFolder::commit() {
     // was carried if anything after fails.
     const std::vector<std::string> to_carry = entries_to_carry();
     std::vector<std::string> carried;
+    fs::path old;  // where the old folder is once the new one is in place
     try {
       for (const std::string& name : to_carry) {
         fs::rename(dir_ / name, staging_ / name);
         carried.push_back(name);
       }
+      if (!carried.empty()) sync_to_disk(staging_);  // the carried names, before the swap
       if (exchange(staging_, dir_)) {
-        fs::remove_all(staging_);  // now the old folder
+        old = staging_;
       } else {
         fs::rename(dir_, replaced_);
         fs::rename(staging_, dir_);
-        fs::remove_all(replaced_);
+        old = replaced_;
       }
     } catch (const std::exception& e) {
       std::error_code ignored;
@@ -138,8 +161,13 @@ void StagedFolder::commit() {
       if (left.empty()) throw;
       stranded_ = true;  // never removed with the user's entries in it
       throw std::runtime_error(std::string(e.what()) + "; " + left + " could not be put back in " +
-                               dir_.string() + " and are in " + staging_.string());
+                               dir_.string() + " and are in " + staging_.string() +
+                               " (the next run into it puts them back)");
     }
+    // The new folder is in place: an old one that cannot be removed now (holding only this
+    // kind of folder's output) is left for the next run to clean, not a failed commit.
+    std::error_code ignored;
+    fs::remove_all(old, ignored);
   }
   sync_to_disk(parent_of(dir_));
   committed_ = true;

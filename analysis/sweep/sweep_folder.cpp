@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "io/atomic_file.hpp"
+#include "scenarios/scenario_error.hpp"
 #include "sim/provenance.hpp"
 
 namespace covsim {
@@ -27,6 +28,15 @@ SweepFolderRecord read_sweep_folder(const fs::path& dir) {
   j.erase("provenance");
   r.sweep = std::move(j);
   return r;
+}
+
+SweepSpec sweep_of_folder(const fs::path& dir) {
+  const SweepFolderRecord record = read_sweep_folder(dir);
+  try {
+    return sweep_from_json(record.sweep);
+  } catch (const std::exception& e) {  // nlohmann's type and key errors too
+    throw ScenarioError((dir / "sweep.json").string() + ": not a sweep covsim wrote: " + e.what());
+  }
 }
 
 void write_sweep_folder(const fs::path& dir, const SweepFolderRecord& record) {

@@ -17,6 +17,9 @@ struct SweepFolderRecord {
 
 // DIR/sweep.json. Throws std::runtime_error naming the file when it is missing or malformed.
 SweepFolderRecord read_sweep_folder(const std::filesystem::path& dir);
+// The sweep a folder's sweep.json holds; one that covsim did not write (a list of the wrong
+// length, a missing key, a wrong type) is a ScenarioError naming the file.
+SweepSpec sweep_of_folder(const std::filesystem::path& dir);
 
 // Makes DIR the folder of `spec`: writes DIR/sweep.json with this build's provenance, or, when
 // DIR already holds one, checks that it is the same sweep (std::runtime_error if not) and

@@ -181,6 +181,7 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
   std::vector<std::thread> threads;
   // No more threads than runs to do: a large --jobs on a small sweep costs nothing.
   const std::size_t workers = std::min(std::max<std::size_t>(1, options.jobs), todo.size());
+  threads.reserve(workers);  // no allocation, hence no throw, with threads running
   for (std::size_t j = 1; j < workers; ++j) {
     try {
       threads.emplace_back(guarded_worker);
@@ -217,12 +218,7 @@ std::vector<SweepResult> merge_sweeps(const std::vector<fs::path>& dirs, const f
     for (const std::string& line : diffs)
       fmt::print(stderr, "  {}\n", line);
   }
-  try {
-    merged = sweep_from_json(first.sweep);
-  } catch (const std::exception& e) {  // nlohmann's type and key errors too
-    throw ScenarioError((dirs.front() / "sweep.json").string() +
-                        ": not a sweep covsim wrote: " + e.what());
-  }
+  merged = sweep_of_folder(dirs.front());
   // Every run's result from the first folder that holds it.
   const std::size_t total = merged.runs().size();
   std::vector<SweepResult> results;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <unordered_map>
 
 #include "io/interrupt.hpp"
 #include "scenarios/input_file.hpp"
@@ -92,13 +93,17 @@ SweepSpec read_sweep(const InputFile& in, const std::filesystem::path& file) {
   // the file, for errors that name the value at fault.
   std::vector<std::vector<nlohmann::json>> settings{{}};
   std::vector<std::string> list_paths;
+  // Repeats found by hashing each value's text (a number as a double: 1 and 1.0 are one
+  // value): lists may hold up to a million values.
   const auto no_repeats = [](const JsonValue& values) {
+    std::unordered_map<std::string, std::size_t> first;
     for (std::size_t i = 0; i < values.size(); ++i) {
-      for (std::size_t j = 0; j < i; ++j) {
-        if (values.raw()[i] == values.raw()[j])
-          values[i].fail(
-              fmt::format("{} is listed twice (also at [{}])", values.raw()[i].dump(), j));
-      }
+      const nlohmann::json& v = values.raw()[i];
+      const auto [at, fresh] =
+          first.emplace(v.is_number() ? nlohmann::json(v.get<double>()).dump() : v.dump(), i);
+      if (!fresh)
+        values[i].fail(
+            fmt::format("{} is listed twice (also at [{}])", values.raw()[i].dump(), at->second));
     }
   };
   auto check_key = [&](const JsonValue& where, const std::string& key) {
@@ -149,13 +154,13 @@ SweepSpec read_sweep(const InputFile& in, const std::filesystem::path& file) {
       list_paths.push_back(values.path());
       columns.emplace_back(key, list);
     }
+    std::unordered_map<std::string, std::size_t> first_row;
     for (std::size_t r = 0; r < rows; ++r) {
-      for (std::size_t q = 0; q < r; ++q) {
-        bool same = true;
-        for (const auto& [key, list] : columns)
-          same = same && list[r] == list[q];
-        if (same) zip->fail(fmt::format("rows {} and {} are the same setting", q, r));
-      }
+      nlohmann::json row = nlohmann::json::array();
+      for (const auto& [key, list] : columns)
+        row.push_back(list[r]);
+      const auto [at, fresh] = first_row.emplace(row.dump(), r);
+      if (!fresh) zip->fail(fmt::format("rows {} and {} are the same setting", at->second, r));
     }
     zip_rows = columns.empty() ? 0 : rows;
     if (rows != 0 && settings.size() > kMaxSweepRuns / rows)
@@ -179,12 +184,12 @@ SweepSpec read_sweep(const InputFile& in, const std::filesystem::path& file) {
 
   const JsonValue seeds = root.at("seeds");
   if (seeds.raw().is_array()) {
+    std::unordered_map<std::uint64_t, std::size_t> first_seed;
     for (std::size_t i = 0; i < seeds.size(); ++i) {
       const std::uint64_t seed = seeds[i].unsigned_integer();
-      for (std::size_t j = 0; j < spec.seeds.size(); ++j) {
-        if (spec.seeds[j] == seed)
-          seeds[i].fail(fmt::format("seed {} is listed twice (also at [{}])", seed, j));
-      }
+      const auto [at, fresh] = first_seed.emplace(seed, i);
+      if (!fresh)
+        seeds[i].fail(fmt::format("seed {} is listed twice (also at [{}])", seed, at->second));
       spec.seeds.push_back(seed);
     }
     if (spec.seeds.empty()) seeds.fail("expected at least one seed");

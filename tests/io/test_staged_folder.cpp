@@ -86,6 +86,38 @@ TEST_CASE("a staged folder recovers what a killed commit left", "[staged_folder]
     CHECK(read(dir / "result.txt") == "new");
     CHECK_FALSE(fs::exists(replaced));
   }
+  SECTION("killed between the renames with a user's note carried: the note goes back") {
+    folder_with(replaced, "old");
+    folder_with(staging, "half");
+    write(staging / "notes.txt", "mine");
+    StagedFolder f(dir, owned);
+    CHECK(read(dir / "result.txt") == "old");
+    CHECK(read(dir / "notes.txt") == "mine");
+    CHECK(fs::is_empty(f.path()));
+  }
+  SECTION("killed while carrying, the old folder still in place: the note goes back") {
+    folder_with(dir, "old");
+    folder_with(staging, "half");
+    write(staging / "notes.txt", "mine");
+    StagedFolder f(dir, owned);
+    CHECK(read(dir / "result.txt") == "old");
+    CHECK(read(dir / "notes.txt") == "mine");
+  }
+  SECTION("a note left in the staging folder whose name DIR has too is refused, both kept") {
+    folder_with(dir, "old");
+    write(dir / "notes.txt", "new note");
+    folder_with(staging, "half");
+    write(staging / "notes.txt", "old note");
+    CHECK_THROWS_WITH(StagedFolder(dir, owned),
+                      Catch::Contains("notes.txt, left by an earlier run"));
+    CHECK(read(dir / "notes.txt") == "new note");
+    CHECK(read(staging / "notes.txt") == "old note");
+  }
+  SECTION("a killed first run leaves no folder behind") {
+    folder_with(staging, "half");
+    StagedFolder f(dir, owned);
+    CHECK_FALSE(fs::exists(dir));
+  }
 }
 
 TEST_CASE("a staged folder refuses a file in its place", "[staged_folder]") {

@@ -171,9 +171,11 @@ TEST_CASE("a run whose series cannot be written is not recorded, and a rerun red
   CHECK_THAT(*first[2].error, Catch::Contains("cannot write its metrics series"));
   CHECK_FALSE(fs::exists(dir / "out" / "runs" / "2.json"));
   CHECK(fs::exists(dir / "out" / "runs" / "1.json"));
-  // Space freed: the rerun runs it, and only it.
+  // Space freed: the rerun runs it, and only it (run 1's result is not written again).
   fs::remove(dir / "out" / "runs" / "2.metrics.csv");
+  const auto written = fs::last_write_time(dir / "out" / "runs" / "1.json");
   const auto second = run_sweep(spec, dir / "out", SweepOptions{1, false, 0, 1, true});
+  CHECK(fs::last_write_time(dir / "out" / "runs" / "1.json") == written);
   CHECK_FALSE(second[2].error);
   CHECK(fs::is_regular_file(dir / "out" / "runs" / "2.metrics.csv"));
   CHECK(fs::exists(dir / "out" / "runs" / "2.json"));
