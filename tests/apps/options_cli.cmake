@@ -5,15 +5,7 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(u ${SOURCE}/scenarios/u_shape.json)
 
-function(run_ok name)  # run_ok(NAME ARGS...): exit 0, stdout in ${name}_out
-  execute_process(COMMAND ${COVSIM} ${ARGN} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc
-                  OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "covsim ${ARGN}: exit ${rc}: ${err}")
-  endif()
-  set(${name}_out "${out}" PARENT_SCOPE)
-  set(${name}_err "${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run_ok.cmake)
 function(fingerprint var dir)
   file(READ ${dir}/final.json final)
   string(JSON fp GET "${final}" fingerprint)

@@ -2,23 +2,19 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/kernel_example.hpp"
 #include "core/trace.hpp"
+#include "tests/scratch_files.hpp"
 
 using namespace covsim;
 namespace fs = std::filesystem;
+using covsim::test::file_text;
+using covsim::test::scratch_dir;
 
 namespace {
-fs::path temp_dir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("covsim-test-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 KernelExampleResult traced_run(const fs::path& file, std::uint64_t seed) {
   Kernel k(seed);
@@ -33,16 +29,10 @@ KernelExampleResult traced_run(const fs::path& file, std::uint64_t seed) {
   return r;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 }  // namespace
 
 TEST_CASE("a trace round-trips: header, one record per event, running fingerprint", "[trace]") {
-  const fs::path dir = temp_dir("trace-roundtrip");
+  const fs::path dir = scratch_dir("trace-roundtrip");
   const auto r = traced_run(dir / "a.trace", 9);
   TraceReader reader(dir / "a.trace");
   CHECK(reader.header().seed == 9);
@@ -65,7 +55,7 @@ TEST_CASE("a trace round-trips: header, one record per event, running fingerprin
 }
 
 TEST_CASE("each record carries the fingerprint its handler sees", "[trace]") {
-  const fs::path dir = temp_dir("trace-fingerprints");
+  const fs::path dir = scratch_dir("trace-fingerprints");
   std::vector<std::uint64_t> seen;
   {
     Kernel k(3);
@@ -89,7 +79,7 @@ TEST_CASE("each record carries the fingerprint its handler sees", "[trace]") {
 }
 
 TEST_CASE("comparing traces finds the first diverging event", "[trace]") {
-  const fs::path dir = temp_dir("trace-diverge");
+  const fs::path dir = scratch_dir("trace-diverge");
   traced_run(dir / "a.trace", 9);
   traced_run(dir / "b.trace", 9);
   {
@@ -97,7 +87,7 @@ TEST_CASE("comparing traces finds the first diverging event", "[trace]") {
     CHECK_FALSE(first_divergence(a, b));
   }
   // Alter one record's time in a copy: the divergence is at exactly that record.
-  std::string text = slurp(dir / "a.trace");
+  std::string text = file_text(dir / "a.trace");
   const std::size_t events_at = text.find("\nevents\n") + 8;
   std::size_t line_start = events_at;
   for (int i = 0; i < 57; ++i)
@@ -119,7 +109,7 @@ TEST_CASE("comparing traces finds the first diverging event", "[trace]") {
   traced_run(dir / "d.trace", 10);
   TraceReader a2(dir / "a.trace"), d2(dir / "d.trace");
   CHECK(first_divergence(a2, d2));
-  std::string cut = slurp(dir / "a.trace");
+  std::string cut = file_text(dir / "a.trace");
   cut.resize(cut.find('\n', events_at) + 1);  // header and one record
   std::ofstream(dir / "e.trace") << cut;
   TraceReader a3(dir / "a.trace"), e3(dir / "e.trace");
@@ -128,7 +118,7 @@ TEST_CASE("comparing traces finds the first diverging event", "[trace]") {
   CHECK(e4.next());
   CHECK_THROWS_WITH(e4.next(),
                     Catch::Contains("cut short: it ends after 1 events without its end record"));
-  std::string edited = slurp(dir / "a.trace");
+  std::string edited = file_text(dir / "a.trace");
   const std::size_t end_at = edited.rfind("\nend ") + 5;
   edited.insert(end_at, "1");  // the count gains a leading digit
   std::ofstream(dir / "f.trace") << edited;
@@ -137,7 +127,7 @@ TEST_CASE("comparing traces finds the first diverging event", "[trace]") {
 }
 
 TEST_CASE("malformed traces are reported with file and line", "[trace]") {
-  const fs::path dir = temp_dir("trace-malformed");
+  const fs::path dir = scratch_dir("trace-malformed");
   auto expect_error = [&](const std::string& text, const std::string& fragment) {
     std::ofstream(dir / "bad.trace") << text;
     try {
@@ -172,7 +162,7 @@ TEST_CASE("malformed traces are reported with file and line", "[trace]") {
 }
 
 TEST_CASE("an uncommitted trace leaves no file behind", "[trace]") {
-  const fs::path dir = temp_dir("trace-uncommitted");
+  const fs::path dir = scratch_dir("trace-uncommitted");
   {
     TraceWriter w(dir / "x.trace", TraceHeader{});
     w.record(0, SimTime::from_ns(1), "tick", 0, 1);

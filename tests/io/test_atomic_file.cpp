@@ -8,33 +8,18 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "io/atomic_file.hpp"
+#include "tests/scratch_files.hpp"
 
 namespace fs = std::filesystem;
 using covsim::AtomicFile;
-
-namespace {
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("covsim-atomic-" + std::to_string(getpid()) + "-" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-}  // namespace
+using covsim::test::file_text;
+using covsim::test::scratch_dir;
 
 TEST_CASE("a regular file appears only when committed", "[atomic_file]") {
-  const fs::path d = fresh_dir("regular");
+  const fs::path d = scratch_dir("regular");
   {
     AtomicFile f(d / "a.txt");
     f.stream() << "one";
@@ -45,34 +30,34 @@ TEST_CASE("a regular file appears only when committed", "[atomic_file]") {
   AtomicFile f(d / "a.txt");
   f.stream() << "two";
   f.commit();
-  CHECK(slurp(d / "a.txt") == "two");
+  CHECK(file_text(d / "a.txt") == "two");
 }
 
 TEST_CASE("a symbolic link stays a link; the file it points to is written", "[atomic_file]") {
-  const fs::path d = fresh_dir("link");
+  const fs::path d = scratch_dir("link");
   std::ofstream(d / "target.txt") << "old";
   fs::create_symlink("target.txt", d / "link.txt");
   AtomicFile f(d / "link.txt");
   f.stream() << "new";
   f.commit();
   CHECK(fs::is_symlink(fs::symlink_status(d / "link.txt")));
-  CHECK(slurp(d / "target.txt") == "new");
+  CHECK(file_text(d / "target.txt") == "new");
   CHECK_FALSE(fs::exists(d / "link.txt.partial"));
 }
 
 TEST_CASE("a dangling symbolic link stays a link; the file it names is created", "[atomic_file]") {
-  const fs::path d = fresh_dir("dangling");
+  const fs::path d = scratch_dir("dangling");
   fs::create_directories(d / "sub");
   fs::create_symlink("sub/later.txt", d / "link.txt");
   AtomicFile f(d / "link.txt");
   f.stream() << "made";
   f.commit();
   CHECK(fs::is_symlink(fs::symlink_status(d / "link.txt")));
-  CHECK(slurp(d / "sub" / "later.txt") == "made");
+  CHECK(file_text(d / "sub" / "later.txt") == "made");
 }
 
 TEST_CASE("a FIFO is written through, not replaced by a regular file", "[atomic_file]") {
-  const fs::path d = fresh_dir("fifo");
+  const fs::path d = scratch_dir("fifo");
   const fs::path fifo = d / "pipe";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   // The read end opened first without blocking: if the FIFO were replaced, the test reads

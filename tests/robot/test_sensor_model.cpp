@@ -123,7 +123,8 @@ TEST_CASE("range noise comes from each robot's sensor-noise stream, N(0, σ²) a
       REQUIRE(r.visible().pieces[j].a == expected.visible().pieces[j].a);
       REQUIRE(r.visible().pieces[j].b == expected.visible().pieces[j].b);
       // Each piece's end is measured once (shared with the next piece).
-      const double e = distance(r.visible().pieces[j].b, p) - distance(exact.visible().pieces[j].b, p);
+      const double e =
+          distance(r.visible().pieces[j].b, p) - distance(exact.visible().pieces[j].b, p);
       sum += e;
       sum2 += e * e;
       ++n;

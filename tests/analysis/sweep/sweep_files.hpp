@@ -1,20 +1,16 @@
 #pragma once
 // Scratch folders and sweep files for the sweep and sweep-chart tests.
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "tests/scratch_files.hpp"
+
 namespace covsim::test {
 
-// A fresh folder under the temporary directory, named for this process and `name`.
+// A fresh folder under the temporary directory for a sweep test.
 inline std::filesystem::path temp_dir(const std::string& name) {
-  const std::filesystem::path d = std::filesystem::temp_directory_path() /
-                                  ("covsim-sweep-" + std::to_string(::getpid()) + "-" + name);
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d;
+  return scratch_dir("sweep-" + name);
 }
 
 // DIR/sweep.json holding `body`.
