@@ -8,17 +8,16 @@
 // writes them into that file.
 #include <fmt/format.h>
 
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/plugin_loader.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bounded_read.hpp"
 #include "scenarios/component_sections.hpp"
 #include "scenarios/doc_tables.hpp"
 #include "scenarios/scenario_sections.hpp"
@@ -85,11 +84,12 @@ void print(const ScenarioSection& section, bool names_only) {
 }
 
 void update_docs(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("list --update-docs: cannot read {}", file));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
+  std::string text;
+  try {
+    text = read_whole_file(file);
+  } catch (const InputReadError& e) {
+    throw InputError(fmt::format("list --update-docs: {}", e.what()));
+  }
   for (const DocTable& table : scenario_doc_tables()) {
     try {
       text = with_doc_table(text, table);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/fingerprint.hpp"
+#include "io/bounded_read.hpp"
 
 namespace covsim {
 
@@ -57,7 +58,7 @@ TraceReader::TraceReader(std::filesystem::path path) : path_(std::move(path)), i
   if (!in_) throw TraceFormatError(path_.string() + ": cannot open trace");
   std::string line;
   auto next_line = [&]() -> bool {
-    if (!std::getline(in_, line)) return false;
+    if (!read_line(line)) return false;
     ++line_;
     return true;
   };
@@ -97,6 +98,15 @@ TraceReader::TraceReader(std::filesystem::path path) : path_(std::move(path)), i
   if (!have_seed || !have_hash) fail("header lacks 'seed' or 'scenario_hash'");
 }
 
+bool TraceReader::read_line(std::string& line) {
+  try {
+    return read_bounded_line(in_, line, kMaxLineBytes, path_.string());
+  } catch (const InputReadError&) {
+    ++line_;
+    fail("a line longer than any record (the file is not a trace)");
+  }
+}
+
 void TraceReader::fail(const std::string& what) const {
   throw TraceFormatError(path_.string() + ":" + std::to_string(line_) + ": " + what);
 }
@@ -104,7 +114,7 @@ void TraceReader::fail(const std::string& what) const {
 std::optional<TraceRecord> TraceReader::next() {
   if (ended_) return std::nullopt;
   std::string line;
-  if (!std::getline(in_, line))
+  if (!read_line(line))
     fail(fmt::format("the trace is cut short: it ends after {} events without its end record",
                      records_));
   ++line_;
@@ -122,7 +132,7 @@ std::optional<TraceRecord> TraceReader::next() {
           "{}: the trace was edited",
           count, Fingerprint::to_hex(*fp), records_, Fingerprint::to_hex(last_fingerprint_)));
     std::string rest;
-    if (std::getline(in_, rest)) {
+    if (read_line(rest)) {
       ++line_;
       fail("text after the end record");
     }

@@ -81,6 +81,9 @@ class TraceReader {
 
  private:
   [[noreturn]] void fail(const std::string& what) const;
+  // A record is about a hundred bytes: a longer line (/dev/zero) ends the read.
+  static constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+  bool read_line(std::string& line);
   std::filesystem::path path_;
   std::ifstream in_;
   std::uint64_t line_ = 0, records_ = 0, last_fingerprint_ = 0;

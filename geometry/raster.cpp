@@ -4,9 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/bounded_read.hpp"
 
 namespace covsim {
 
@@ -28,8 +29,7 @@ double Raster::operator()(Vec2 x) const {
 }
 
 std::vector<std::vector<double>> read_raster_csv(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": cannot open raster");
+  std::istringstream in(read_whole_file(file));
   std::vector<std::vector<double>> rows;
   std::string line;
   for (int lineno = 1; std::getline(in, line); ++lineno) {
@@ -58,8 +58,7 @@ std::vector<std::vector<double>> read_raster_csv(const std::filesystem::path& fi
 }
 
 std::vector<std::vector<double>> read_raster_pgm(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error(file.string() + ": cannot open raster");
+  std::istringstream in(read_whole_file(file));
   auto fail = [&](const std::string& what) -> std::runtime_error {
     return std::runtime_error(file.string() + ": " + what);
   };

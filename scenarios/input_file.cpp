@@ -1,8 +1,6 @@
 #include "scenarios/input_file.hpp"
 
-#include <fstream>
-#include <sstream>
-
+#include "io/bounded_read.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/yaml_reader.hpp"
 
@@ -36,11 +34,11 @@ std::string read_text_file(const std::filesystem::path& file, std::string_view f
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec))
     throw ScenarioError(file.string() + ": is a directory, not a " + std::string(format) + " file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw ScenarioError(file.string() + ": cannot open file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  try {
+    return read_whole_file(file);
+  } catch (const InputReadError& e) {
+    throw ScenarioError(e.what());
+  }
 }
 
 InputFile read_input(const std::filesystem::path& file) {

@@ -42,6 +42,10 @@ class LineReader {
         begin_ = buffer_.size();
         return true;
       }
+      // A row is a few hundred bytes: a line without end (/dev/zero) is not a run's file.
+      if (buffer_.size() - begin_ > kMaxLineBytes)
+        throw ScenarioError(file_.string() +
+                            ": a line longer than 1 MiB (not a file covsim wrote)");
       fill();
     }
   }
@@ -67,6 +71,7 @@ class LineReader {
     end_ = n == 0;
   }
 
+  static constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
   fs::path file_;
   gzFile in_;
   std::string buffer_;

@@ -2,9 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-
 #include "io/atomic_file.hpp"
+#include "io/bounded_read.hpp"
 #include "scenarios/scenario_error.hpp"
 #include "sim/provenance.hpp"
 
@@ -14,11 +13,12 @@ namespace fs = std::filesystem;
 
 SweepFolderRecord read_sweep_folder(const fs::path& dir) {
   const fs::path file = dir / "sweep.json";
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(dir.string() + ": not a sweep folder (no sweep.json)");
+  std::error_code ec;
+  if (!fs::exists(file, ec))
+    throw std::runtime_error(dir.string() + ": not a sweep folder (no sweep.json)");
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(in);
+    j = nlohmann::json::parse(read_whole_file(file));
   } catch (const nlohmann::json::parse_error& e) {
     throw std::runtime_error(file.string() + ": " + e.what());
   }

@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
 
 #include "analysis/records/result_fields.hpp"
 #include "io/atomic_file.hpp"
+#include "io/bounded_read.hpp"
 
 namespace covsim {
 
@@ -44,10 +44,12 @@ void write_result(const fs::path& dir, const SweepResult& r) {
 }
 
 std::optional<SweepResult> read_result(const fs::path& dir, std::size_t index) {
-  std::ifstream in(result_file(dir, index));
-  if (!in) return std::nullopt;
+  std::error_code ec;
+  if (!fs::exists(result_file(dir, index), ec)) return std::nullopt;
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    // A result is a line of JSON: a file a megabyte long is not one covsim wrote.
+    const nlohmann::json j =
+        nlohmann::json::parse(read_whole_file(result_file(dir, index), 1 << 20));
     SweepResult r;
     r.index = j.at("index").get<std::size_t>();
     if (r.index != index) return std::nullopt;

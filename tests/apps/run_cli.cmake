@@ -69,6 +69,16 @@ execute_process(COMMAND ${COVSIM} run ${WORK}/norobots.json --out ${WORK}/nr RES
 if(NOT rc EQUAL 2 OR NOT err MATCHES "robots" OR EXISTS ${WORK}/nr)
   message(FATAL_ERROR "scenario without robots: expected exit 2 and nothing written, got ${rc}: ${err}")
 endif()
+# An endless input (a device, a pipe): refused past the input limit, never read until memory
+# runs out.
+execute_process(COMMAND ${COVSIM} run /dev/zero --out ${WORK}/zero RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "/dev/zero: larger than 256 MiB" OR EXISTS ${WORK}/zero)
+  message(FATAL_ERROR "run /dev/zero: expected exit 2 naming the limit, got ${rc}: ${err}")
+endif()
+execute_process(COMMAND ${COVSIM} replay /dev/zero RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "/dev/zero:1: a line longer than any record")
+  message(FATAL_ERROR "replay /dev/zero: expected exit 2, got ${rc}: ${err}")
+endif()
 file(WRITE ${WORK}/afile "x")
 execute_process(COMMAND ${COVSIM} run ${SOURCE}/scenarios/u_shape.json --out ${WORK}/afile RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
 if(NOT rc EQUAL 2)
