@@ -4,25 +4,11 @@
 #include <system_error>
 
 #include "io/durable_sync.hpp"
+#include "io/link_target.hpp"
 
 namespace covsim {
 
 namespace fs = std::filesystem;
-
-namespace {
-// Where a chain of symbolic links ends (the path itself if it is none), each link's text
-// taken relative to its own folder; the end may not exist yet (a dangling link).
-fs::path link_target(fs::path p) {
-  for (int hops = 0; hops < 40; ++hops) {
-    std::error_code ec;
-    if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
-    const fs::path text = fs::read_symlink(p, ec);
-    if (ec) throw std::runtime_error(p.string() + ": cannot read the link: " + ec.message());
-    p = text.is_absolute() ? text : p.parent_path() / text;
-  }
-  throw std::runtime_error(p.string() + ": too many levels of symbolic links");
-}
-}  // namespace
 
 AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)), target_(path_) {
   std::error_code ec;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/durable_sync.hpp"
+#include "io/link_target.hpp"
 
 namespace covsim {
 
@@ -67,11 +68,19 @@ std::vector<std::string> StagedFolder::entries_to_carry() const {
 }
 
 StagedFolder::StagedFolder(fs::path dir, std::function<bool(const std::string&)> owned)
-    : dir_(std::move(dir)),
+    : dir_(link_target(std::move(dir))),  // a link to a folder stays; the folder is replaced
       staging_(dir_.string() + ".partial"),
       replaced_(dir_.string() + ".replaced"),
       owned_(std::move(owned)) {
   std::error_code ec;
+  // A mount point cannot be renamed: refused before anything is touched.
+  struct stat self {
+  }, parent{};
+  if (::stat(dir_.c_str(), &self) == 0 && S_ISDIR(self.st_mode) &&
+      ::stat(parent_of(dir_).c_str(), &parent) == 0 && self.st_dev != parent.st_dev)
+    throw std::invalid_argument(dir_.string() +
+                                ": is a mount point, which covsim cannot replace with the new "
+                                "output; nothing was changed: choose a folder inside it");
   // What a killed run left: an old folder not yet removed (DIR itself is then the complete
   // new one, or, if DIR is missing, the old one is put back) and a staging folder, which may
   // hold a user's entries carried into it: those go back into DIR before it is removed.

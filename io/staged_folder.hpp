@@ -7,7 +7,9 @@
 // Entries of the old DIR that are not `owned` (a user's notes, a video they made) are
 // carried into the new one, after each is checked to be movable (on the same file system;
 // a folder writable): an entry that is not refuses the folder at construction and at commit,
-// with nothing moved. Destroyed without commit, the staging folder is removed.
+// with nothing moved. Destroyed without commit, the staging folder is removed. A DIR that is
+// a symbolic link stays one: the folder it points to is the one replaced. A DIR that is a
+// mount point is refused at construction.
 #include <filesystem>
 #include <functional>
 #include <string>
