@@ -23,7 +23,8 @@ struct World {
   explicit World(std::size_t n)
       : side(std::sqrt(static_cast<double>(n))),
         square({{0, 0}, {side, 0}, {side, side}, {0, side}}, {}),
-        channel(covsim::ChannelConfig{std::sqrt(20.0 / std::numbers::pi), false, nullptr, nullptr},
+        channel(covsim::ChannelConfig{std::sqrt(20.0 / std::numbers::pi), false, nullptr, nullptr,
+                                      nullptr},
                 1, square) {
     covsim::RandomStream rng(1, n, "bench-robots");
     for (std::size_t i = 0; i < n; ++i)

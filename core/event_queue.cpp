@@ -220,6 +220,15 @@ bool EventQueue::refill(std::uint64_t limit) {
   return false;
 }
 
+std::optional<SimTime> EventQueue::earliest_bound() const {
+  if (live_ == 0) return std::nullopt;
+  if (!front_empty()) return time_of(last_);
+  // Buckets in increasing index hold increasing keys: the lowest's least is the least.
+  const int b = lowest_occupied();
+  if (b < 0) return std::nullopt;
+  return time_of(least_[b]);
+}
+
 std::optional<EventQueue::Popped> EventQueue::pop(SimTime not_after) {
   for (;;) {
     if (front_empty()) {

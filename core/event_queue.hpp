@@ -51,6 +51,10 @@ class EventQueue {
   std::optional<Popped> pop(SimTime not_after = SimTime::max());
   std::size_t size() const { return live_; }
   bool empty() const { return live_ == 0; }
+  // A time no pending event precedes (that of the earliest, or of a cancelled entry not yet
+  // dropped before it); nullopt when nothing is pending. Changes nothing: a push at or after
+  // the time last popped stays cheap.
+  std::optional<SimTime> earliest_bound() const;
 
  private:
   struct Entry {

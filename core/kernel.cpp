@@ -120,7 +120,27 @@ bool Kernel::reschedule(TimerHandle h, SimTime at) {
   return true;
 }
 
+bool Kernel::dispatch_next_with_peer(SimTime not_after) {
+  for (;;) {
+    const std::optional<SimTime> bound = queue_.earliest_bound();
+    const SimTime target = bound ? std::min(*bound, not_after) : not_after;
+    if (target == SimTime::max()) return false;  // nothing pending and no limit
+    if (target > peer_time_) {
+      peer_time_ = target;
+      peer_->advance_to(*this, target);
+    }
+    // Only events the peer has caught up with: the bound may be a cancelled entry's time.
+    if (pop_and_dispatch(std::min(not_after, peer_time_))) return true;
+    if (!bound || *bound >= not_after) return false;
+  }
+}
+
 bool Kernel::dispatch_next(SimTime not_after) {
+  if (peer_ != nullptr) return dispatch_next_with_peer(not_after);
+  return pop_and_dispatch(not_after);
+}
+
+bool Kernel::pop_and_dispatch(SimTime not_after) {
   auto popped = queue_.pop(not_after);
   if (!popped) return false;
   auto& [ev, timer_index] = *popped;

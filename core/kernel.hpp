@@ -22,6 +22,16 @@ namespace covsim {
 class Kernel;
 class TraceSink;
 
+// A simulator run beside the kernel (a network simulator over a pipe), conservatively: before
+// the kernel dispatches an event at time t it has the peer run to t, and the peer schedules
+// what happened in its run (a reception becomes a delivery event) at those times, which are
+// after the time it last ran to and not after t.
+class KernelPeer {
+ public:
+  virtual ~KernelPeer() = default;
+  virtual void advance_to(Kernel& kernel, SimTime t) = 0;
+};
+
 using Handler = std::function<void(Kernel&, const Event&)>;
 
 enum class StopReason {
@@ -92,6 +102,8 @@ class Kernel {
   const Fingerprint& fingerprint() const { return fingerprint_; }
   // Records every dispatched event; the sink must outlive the runs it records.
   void attach_trace(TraceSink* trace) { trace_ = trace; }
+  // Runs `peer` in step with the kernel (see KernelPeer); it must outlive the runs. One peer.
+  void attach_peer(KernelPeer* peer) { peer_ = peer; }
 
   // The random stream for (this run's seed, entity, purpose).
   RandomStream stream(std::uint64_t entity, std::string_view purpose) const {
@@ -124,6 +136,10 @@ class Kernel {
   RunResult run_loop(const Limits& limits);
   // Dispatches the earliest event if it is not after `not_after`; false if there is none.
   bool dispatch_next(SimTime not_after);
+  // The same with a peer: the peer is run to each event's time before it is dispatched.
+  bool dispatch_next_with_peer(SimTime not_after);
+  // Pops and dispatches the earliest event not after `not_after`; false if there is none.
+  bool pop_and_dispatch(SimTime not_after);
   Timer* timer_of(TimerHandle h);
   const Timer* timer_of(TimerHandle h) const;
   void check_not_past(SimTime t) const;
@@ -138,6 +154,8 @@ class Kernel {
   std::vector<std::uint32_t> free_timers_;
   Fingerprint fingerprint_;
   TraceSink* trace_ = nullptr;
+  KernelPeer* peer_ = nullptr;
+  SimTime peer_time_;  // what the peer has run to
 };
 
 }  // namespace covsim

@@ -8,8 +8,17 @@
 namespace covsim {
 
 bool ChannelConfig::is_ideal() const {
-  return !range && !line_of_sight && (!loss || loss->lossless()) &&
+  return !model && !range && !line_of_sight && (!loss || loss->lossless()) &&
          (!delay || delay->instantaneous());
+}
+
+ChannelEntry abstract_channel_entry() {
+  ChannelEntry e;
+  e.name = "abstract";
+  e.description =
+      "covsim's own: network.range, line_of_sight, loss and delay decide each link's message";
+  e.make = [](const Params&) { return std::shared_ptr<const ChannelModel>(); };
+  return e;
 }
 
 Channel::Channel(ChannelConfig config, std::uint64_t seed, const Environment& env)

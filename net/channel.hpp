@@ -12,6 +12,7 @@
 
 #include "core/sim_time.hpp"
 #include "geometry/environment.hpp"
+#include "net/channel_model.hpp"
 #include "net/delay_model.hpp"
 #include "net/loss_model.hpp"
 
@@ -22,6 +23,8 @@ struct ChannelConfig {
   bool line_of_sight = false;               // walls block: the straight link must lie in Ω
   std::shared_ptr<const LossModel> loss;    // unset: no loss
   std::shared_ptr<const DelayModel> delay;  // unset: no delay
+  // A simulated radio (network.channel) in place of the above; unset: this channel.
+  std::shared_ptr<const ChannelModel> model;
   // The default channel (unlimited, lossless, instantaneous) is equivalent to every robot
   // knowing every other robot's state at once.
   bool is_ideal() const;
@@ -60,5 +63,8 @@ class Channel {
   };
   std::vector<Outgoing> outgoing_;
 };
+
+// The registry's "abstract" entry: this channel, configured by the network section's keys.
+ChannelEntry abstract_channel_entry();
 
 }  // namespace covsim

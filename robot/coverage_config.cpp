@@ -217,11 +217,14 @@ ConfigKeys<NetworkConfig> network_keys() {
           period_param("broadcast_period", "seconds between a robot's broadcasts")
               .defaults_to(d.broadcast_period.seconds()),
           &NetworkConfig::broadcast_period),
-      member_key<NetworkConfig>(
-          ParamSpec::boolean("random_phase",
-                             "each robot's first broadcast at a random offset within the period")
-              .defaults_to(d.random_phase),
-          &NetworkConfig::random_phase),
+      NetKey{ParamSpec::boolean("random_phase",
+                                "each robot's first broadcast at a random offset within the period")
+                 .derived("false; true with a simulated radio (network.channel), on which "
+                          "broadcasts at one instant would all collide"),
+             [](NetworkConfig& n, const ParamValue& v) { config_value::from(v, n.random_phase); },
+             [](const NetworkConfig& n, const RunShape&) -> std::optional<ParamValue> {
+               return n.phases_random();
+             }},
       member_key<NetworkConfig>(
           period_param("staleness",
                        "seconds after which an entry is dropped (by its send time); null: never")

@@ -27,7 +27,11 @@ enum class LoopMode {
 struct NetworkConfig {
   ChannelConfig channel;
   SimTime broadcast_period = SimTime::from_ns(100'000'000);  // 0.1 s
-  bool random_phase = false;         // each robot's first broadcast at a random offset
+  // Each robot's first broadcast at a random offset within the period. Unset: not with the
+  // abstract channel (the paper's synchronous rounds), but with a simulated radio, where
+  // broadcasts at one instant would all collide (802.11 sends at once on an idle channel).
+  std::optional<bool> random_phase;
+  bool phases_random() const { return random_phase.value_or(channel.model != nullptr); }
   std::optional<SimTime> staleness;  // entries older than this are dropped; unset: never
   // Algorithm 1 acquires the neighbours (line 3) before its first Lloyd step: robots
   // broadcast from the start, and each runs its first loop 1 `acquire` later (unset: one

@@ -3,9 +3,12 @@
 // (no network simulated) gives every robot every generator as it is now: the centralized
 // controller. The networked view (networked_view.hpp) gives each robot what has reached it
 // through the channel.
+#include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "core/sim_time.hpp"
+#include "net/channel_model.hpp"
 #include "robot/coverage_law.hpp"
 
 namespace covsim {
@@ -13,8 +16,11 @@ namespace covsim {
 struct NetworkTotals {
   std::uint64_t sent = 0;  // link transmissions (one per receiver per broadcast)
   std::uint64_t delivered = 0;
-  std::uint64_t lost = 0;         // dropped by the loss model
+  std::uint64_t lost = 0;         // dropped by the loss model, or not received from the radio
   std::uint64_t unreachable = 0;  // out of range or blocked by walls
+  double latency_mean = NAN;      // s, send to delivery; NaN without deliveries
+  double latency_p95 = NAN;
+  std::optional<RadioTotals> radio;  // a simulated radio's counts (network.channel)
 };
 
 class NeighborView {

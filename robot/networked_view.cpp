@@ -1,6 +1,7 @@
 #include "robot/networked_view.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "robot/event_classes.hpp"
 
@@ -20,6 +21,11 @@ NetworkedView::NetworkedView(Kernel& kernel, const Environment& env, const Netwo
   cell_caches_.resize(2 * n);
   next_seq_.assign(n, 0);
   acquired_.assign(n, false);
+  if (config.channel.model) {
+    session_ = config.channel.model->open(ChannelContext{env, kernel.seed(), positions});
+    sent_.resize(n);
+    kernel_.attach_peer(this);
+  }
   broadcast_kind_ = kernel_.add_kind(
       "broadcast", [this](Kernel& k, const Event& ev) { broadcast(k, ev.entity); });
   deliver_kind_ = kernel_.add_kind("deliver", [this](Kernel&, const Event& ev) {
@@ -36,12 +42,44 @@ NetworkedView::NetworkedView(Kernel& kernel, const Environment& env, const Netwo
   });
 }
 
+NetworkedView::~NetworkedView() {
+  if (session_) kernel_.attach_peer(nullptr);
+}
+
+NetworkTotals NetworkedView::totals() const {
+  NetworkTotals t = totals_;
+  t.latency_mean = latency_.mean();
+  t.latency_p95 = latency_.quantile(0.95);
+  if (session_) {
+    // Not received is lost: the radio does not say which receiver was out of reach.
+    t.lost = t.sent - t.delivered;
+    t.radio = session_->totals();
+  }
+  return t;
+}
+
+void NetworkedView::advance_to(Kernel& k, SimTime t) {
+  receptions_.clear();
+  session_->advance(t, receptions_);
+  for (const Reception& r : receptions_) {
+    if (r.sender >= sent_.size() || r.receiver >= sent_.size() || r.receiver == r.sender)
+      throw std::runtime_error("the simulated radio reported a reception between unknown robots");
+    const std::deque<StateMessage>& history = sent_[r.sender];
+    if (history.empty() || r.seq < history.front().seq || r.seq > history.back().seq)
+      throw std::runtime_error("the simulated radio reported a message covsim no longer holds");
+    const std::uint32_t slot = new_slot(history[r.seq - history.front().seq]);
+    in_flight_[slot].deliveries = 1;
+    ++totals_.delivered;
+    k.schedule_at(r.at, deliver_kind_, r.receiver, event_class::deliver, slot);
+  }
+}
+
 void NetworkedView::start(SimTime t0) {
   t0_ = t0;
   const Period period = Period::from_ns(config_.broadcast_period.ns());
   for (std::uint32_t i = 0; i < tables_.size(); ++i) {
     SimTime phase = t0;
-    if (config_.random_phase) {
+    if (config_.phases_random()) {
       phase += SimTime::from_seconds(
           kernel_.stream(i, "broadcast-phase").uniform(0.0, period.seconds()));
     }
@@ -61,6 +99,7 @@ bool NetworkedView::ready(std::uint32_t i) {
 
 void NetworkedView::moved(std::uint32_t i) {
   if (receivers_) receivers_->moved(i, state_.points(Generators::positions)[i]);
+  if (session_) session_->moved(i, state_.points(Generators::positions)[i]);
 }
 
 void NetworkedView::refresh(std::uint32_t i) {
@@ -95,6 +134,13 @@ void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {
                        positions[i]};
   const auto n = static_cast<std::uint32_t>(tables_.size());
   totals_.sent += n - 1;
+  if (session_) {
+    std::deque<StateMessage>& history = sent_[i];
+    history.push_back(m);
+    if (history.size() > kKeptMessages) history.pop_front();
+    session_->broadcast(i, m.seq, kStateMessageBytes);
+    return;
+  }
   const std::uint32_t slot = new_slot(m);
   // With a finite range only the robots near the sender can hear it; the others are out of
   // range, and their links draw nothing, as if tested one by one.
@@ -150,7 +196,9 @@ void NetworkedView::transmit(Kernel& k, std::uint32_t slot, std::uint32_t i, std
 }
 
 void NetworkedView::receive(std::uint32_t j, std::uint32_t slot) {
-  tables_[j].update(in_flight_[slot].message);
+  const StateMessage& m = in_flight_[slot].message;
+  latency_.add((kernel_.now() - m.sent).seconds());
+  tables_[j].update(m);
   if (--in_flight_[slot].deliveries == 0) free_slots_.push_back(slot);
 }
 

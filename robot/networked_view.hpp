@@ -9,12 +9,19 @@
 // Algorithm 1 acquires the neighbours (line 3) before its first Lloyd step: a robot is
 // ready once NetworkConfig::acquire_time() has passed since the start and it has heard
 // somebody, or once acquire_deadline() has passed (it then goes alone, its cell Ω).
+//
+// With a simulated radio (network.channel, e.g. ns3_wifi) the channel is a session run
+// beside the kernel (KernelPeer): a broadcast is handed to it with its size, each motion
+// step moves the robot's radio, and each reception it reports becomes a "deliver" event at
+// its time. A message is kept until its sender has sent kKeptMessages newer ones.
+#include <deque>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "core/kernel.hpp"
 #include "net/channel.hpp"
+#include "net/latency_stats.hpp"
 #include "net/neighbor_table.hpp"
 #include "net/receiver_grid.hpp"
 #include "robot/coverage_config.hpp"
@@ -23,17 +30,20 @@
 
 namespace covsim {
 
-class NetworkedView final : public NeighborView {
+class NetworkedView final : public NeighborView, private KernelPeer {
  public:
   NetworkedView(Kernel& kernel, const Environment& env, const NetworkConfig& config,
                 const GeneratorState& state);
+  ~NetworkedView() override;
+  NetworkedView(const NetworkedView&) = delete;
+  NetworkedView& operator=(const NetworkedView&) = delete;
   bool decentralized() const override { return true; }
   void start(SimTime t0) override;
   bool ready(std::uint32_t i) override;
   void refresh(std::uint32_t i) override;
   void moved(std::uint32_t i) override;
   Knowledge knowledge(std::uint32_t i, Generators kind) const override;
-  NetworkTotals totals() const override { return totals_; }
+  NetworkTotals totals() const override;
 
   const Channel& channel() const { return *channel_; }
   const NetworkConfig& config() const { return config_; }
@@ -47,11 +57,21 @@ class NetworkedView final : public NeighborView {
   std::uint32_t new_slot(const StateMessage& m);
   // Robot j reads the message in `slot`.
   void receive(std::uint32_t j, std::uint32_t slot);
+  // The simulated radio's receptions up to t, as delivery events.
+  void advance_to(Kernel& k, SimTime t) override;
+
+  // A sender's messages a simulated radio may still deliver: far more than its MAC queue
+  // holds (ns-3's: 500 frames).
+  static constexpr std::size_t kKeptMessages = 1024;
 
   Kernel& kernel_;
   NetworkConfig config_;
   const GeneratorState& state_;
   std::unique_ptr<Channel> channel_;
+  std::unique_ptr<ChannelSession> session_;     // a simulated radio; null: channel_ decides
+  std::vector<std::deque<StateMessage>> sent_;  // per sender, with a session
+  std::vector<Reception> receptions_;
+  LatencyStats latency_;
   std::optional<ReceiverGrid> receivers_;  // with a finite range only
   std::vector<std::uint32_t> candidates_;
   EventKind broadcast_kind_ = 0, deliver_kind_ = 0;

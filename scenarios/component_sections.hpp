@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "geometry/density_registry.hpp"
+#include "net/channel_registry.hpp"
 #include "net/delay_registry.hpp"
 #include "net/loss_registry.hpp"
 #include "planners/planner_registry.hpp"
@@ -41,6 +42,8 @@ inline const auto& component_sections() {
                                   R"({"model": "none"})", loss_registry},
       ComponentSection<DelayEntry>{"delay", "network.delay", "model", std::nullopt,
                                    R"({"model": "constant", "value": 0.0})", delay_registry},
+      ComponentSection<ChannelEntry>{"channels", "network.channel", "type", std::string("abstract"),
+                                     R"({"type": "abstract"})", channel_registry},
       ComponentSection<DensityEntry>{"densities", "density", "type", std::nullopt, "",
                                      density_registry}};
   return sections;

@@ -116,6 +116,24 @@ void read_components(const JsonValue& root, CoverageConfig& c) {
         fail_param(*delay, e);
       }
     }
+    if (auto channel = n->find("channel")) {
+      const auto& row = component_section<ChannelEntry>();
+      const ComponentChoice choice = read_component(*channel, row);
+      try {
+        c.network.channel.model = row.registry().at(choice.type).make(choice.params);
+      } catch (const ParamError& e) {
+        fail_param(*channel, e);
+      }
+      // A simulated radio decides reach, loss and delay itself: the abstract channel's keys
+      // beside it would be silently ignored.
+      if (const auto& model = c.network.channel.model) {
+        for (const std::string& key : model->replaces()) {
+          if (auto v = n->find(key); v && !v->is_null())
+            v->fail(fmt::format("does not apply to the {} channel, which decides it itself",
+                                choice.type));
+        }
+      }
+    }
   }
   if (auto p = root.find("planner")) {
     const ComponentChoice choice = read_component(*p, component_section<PlannerEntry>());

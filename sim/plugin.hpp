@@ -21,7 +21,7 @@
 namespace covsim {
 
 // Changes whenever a registry entry or an extension interface changes incompatibly.
-inline constexpr int kPluginApiVersion = 2;
+inline constexpr int kPluginApiVersion = 3;
 
 // The registries of component_sections(), by name, for plugins; built from that table (in its
 // order, which the members' types check), so that it stays the one list of them.
@@ -30,6 +30,7 @@ struct Registries {
   Registry<LawEntry>& laws;
   Registry<LossEntry>& loss;
   Registry<DelayEntry>& delay;
+  Registry<ChannelEntry>& channels;
   Registry<DensityEntry>& densities;
 };
 

@@ -88,6 +88,8 @@ std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<Sw
         }
         series.push_back(std::move(s));
       }
+      // A metric no run took (a simulated radio's count with the abstract channel): no chart.
+      if (series.empty()) continue;
       const auto with_unit = [](const std::string& name, const std::string& unit) {
         return unit.empty() ? name : fmt::format("{} [{}]", name, unit);
       };

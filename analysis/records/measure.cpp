@@ -45,6 +45,27 @@ Measure messages(std::string name, std::string description, std::uint64_t Networ
       [p](O& o, const nlohmann::json& j) { o.network.*p = j.get<std::uint64_t>(); });
 }
 
+// A latency of the run's deliveries (NetworkTotals): null without deliveries.
+Measure latency(std::string name, std::string description, double NetworkTotals::*p) {
+  return outcome(
+      std::move(name), FieldKind::number, "s", std::move(description),
+      [p](const O& o) { return number_or_null(o.network.*p); },
+      [p](O& o, const nlohmann::json& j) { o.network.*p = j.is_null() ? NAN : j.get<double>(); });
+}
+
+// A simulated radio's count (RadioTotals): null with the abstract channel.
+template <class T>
+Measure radio(std::string name, FieldKind kind, std::string description, T RadioTotals::*p) {
+  return outcome(
+      std::move(name), kind, "", std::move(description),
+      [p](const O& o) { return o.network.radio ? json((*o.network.radio).*p) : json(nullptr); },
+      [p](O& o, const nlohmann::json& j) {
+        if (j.is_null()) return;
+        if (!o.network.radio) o.network.radio.emplace();
+        (*o.network.radio).*p = j.get<T>();
+      });
+}
+
 // An incident that stopped the run (RobotIncident): null, or its robot, time, goal and
 // position.
 Measure incident(std::string name, std::string description, std::optional<RobotIncident> O::*p) {
@@ -171,6 +192,48 @@ const std::vector<Measure>& measures() {
                &NetworkTotals::unreachable)
           .in_runs(13)
           .in_summary(),
+      outcome(
+          "network.delivery_ratio", K::number, "", "messages delivered over link transmissions",
+          [](const O& o) {
+            return o.network.sent == 0 ? json(nullptr)
+                                       : json(static_cast<double>(o.network.delivered) /
+                                              static_cast<double>(o.network.sent));
+          },
+          [](O&, const nlohmann::json&) {})  // derived from the message counts
+          .in_runs(28)
+          .in_summary()
+          .later(),
+      latency("network.latency_mean", "mean time from a message's broadcast to its delivery",
+              &NetworkTotals::latency_mean)
+          .in_runs(29)
+          .in_summary()
+          .later(),
+      latency("network.latency_p95", "95th percentile of that time (from a histogram: within 2.3%)",
+              &NetworkTotals::latency_p95)
+          .in_runs(30)
+          .in_summary()
+          .later(),
+      radio("network.channel_occupancy", K::number,
+            "simulated radio: mean fraction of the time a robot's radio found the air busy "
+            "(sending, receiving or sensing energy)",
+            &RadioTotals::occupancy)
+          .in_runs(31)
+          .in_summary()
+          .later(),
+      radio("network.phy_drops", K::integer,
+            "simulated radio: receptions that began and failed (collisions and noise; ns-3's "
+            "PHY drop trace)",
+            &RadioTotals::phy_drops)
+          .in_runs(32)
+          .in_summary()
+          .later(),
+      radio("network.transmissions", K::integer, "simulated radio: frames put on the air",
+            &RadioTotals::transmissions)
+          .later(),
+      radio("network.mac_drops", K::integer,
+            "simulated radio: frames dropped before the air (MAC queue full or too old)",
+            &RadioTotals::mac_drops)
+          .later(),
       communication("info_age_mean", "s", "mean age of neighbour-table entries, over the samples",
                     &CommunicationSummary::info_age_mean)
           .in_runs(14)

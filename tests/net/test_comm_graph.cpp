@@ -329,7 +329,8 @@ TEST_CASE("the communication graph's edges through the grid equal a test of ever
                                       std::optional<double>{2.5}, std::optional<double>{30.0}}) {
     for (bool line_of_sight : {false, true}) {
       INFO("range " << (range ? *range : -1.0) << ", line of sight " << line_of_sight);
-      const Channel channel(ChannelConfig{range, line_of_sight, nullptr, nullptr}, 1, room);
+      const Channel channel(ChannelConfig{range, line_of_sight, nullptr, nullptr, nullptr}, 1,
+                            room);
       CommEdges every_pair;
       for (std::uint32_t a = 0; a < positions.size(); ++a)
         for (std::uint32_t b = a + 1; b < positions.size(); ++b)

@@ -41,7 +41,8 @@ double loss_rate(Channel& c, int n, Vec2 a = {1, 1}, Vec2 b = {2, 1}) {
 
 TEST_CASE("Bernoulli loss matches p over many messages", "[net]") {
   for (double p : {0.0, 0.1, 0.3, 0.9}) {
-    Channel c(ChannelConfig{std::nullopt, false, make<BernoulliLoss>(p), nullptr}, 7, room());
+    Channel c(ChannelConfig{std::nullopt, false, make<BernoulliLoss>(p), nullptr, nullptr}, 7,
+              room());
     const int n = 100000;
     CHECK(std::abs(loss_rate(c, n) - p) <= 5 * std::sqrt(p * (1 - p) / n) + 1e-12);
   }
@@ -50,7 +51,7 @@ TEST_CASE("Bernoulli loss matches p over many messages", "[net]") {
 TEST_CASE("Gilbert-Elliott loss matches its stationary value", "[net]") {
   const auto ge = make<GilbertElliottLoss>(0.05, 0.2, 0.01, 0.6);
   CHECK(ge->stationary_loss() == Approx(0.8 * 0.01 + 0.2 * 0.6));
-  Channel c(ChannelConfig{std::nullopt, false, ge, nullptr}, 3, room());
+  Channel c(ChannelConfig{std::nullopt, false, ge, nullptr, nullptr}, 3, room());
   // Losses come in bursts, so the bound is wider than for independent draws: the chain
   // mixes in about 1 / (0.05 + 0.2) = 4 steps.
   const int n = 400000;
@@ -62,7 +63,7 @@ TEST_CASE("distance loss follows its formula", "[net]") {
   CHECK(d->at(0.0) == Approx(0.1));
   CHECK(d->at(2.5) == Approx(0.1 + 0.9 * 0.25));
   CHECK(d->at(7.0) == 1.0);
-  Channel c(ChannelConfig{std::nullopt, false, d, nullptr}, 5, room());
+  Channel c(ChannelConfig{std::nullopt, false, d, nullptr, nullptr}, 5, room());
   const int n = 50000;
   const double p = d->at(3.0);
   CHECK(std::abs(loss_rate(c, n, {0.5, 9}, {3.5, 9}) - p) <= 5 * std::sqrt(p * (1 - p) / n));
@@ -73,7 +74,7 @@ TEST_CASE("no message arrives before its minimum delay", "[net]") {
       make<ConstantDelay>(0.02), make<UniformDelay>(0.01, 0.05), make<ExponentialDelay>(0.03, 0.1),
       make<LogNormalDelay>(0.005, -4.0, 0.5)};
   for (const auto& m : models) {
-    Channel c(ChannelConfig{std::nullopt, false, nullptr, m}, 9, room());
+    Channel c(ChannelConfig{std::nullopt, false, nullptr, m, nullptr}, 9, room());
     double least = INFINITY;
     for (int i = 0; i < 20000; ++i) {
       const auto t = c.transmit(2, 3, {1, 1}, {2, 2});
@@ -83,7 +84,8 @@ TEST_CASE("no message arrives before its minimum delay", "[net]") {
     CHECK(least >= m->minimum() - 1e-9);
   }
   // Means, where they are simple: uniform (0.03) and exponential (0.03 + 0.1).
-  Channel u(ChannelConfig{std::nullopt, false, nullptr, make<UniformDelay>(0.01, 0.05)}, 1, room());
+  Channel u(ChannelConfig{std::nullopt, false, nullptr, make<UniformDelay>(0.01, 0.05), nullptr}, 1,
+            room());
   double sum = 0;
   for (int i = 0; i < 20000; ++i)
     sum += u.transmit(0, 1, {1, 1}, {2, 2}).delay.seconds();
@@ -92,9 +94,9 @@ TEST_CASE("no message arrives before its minimum delay", "[net]") {
 
 TEST_CASE("each link draws from its own streams", "[net]") {
   auto outcomes = [](bool extra_traffic) {
-    Channel c(
-        ChannelConfig{std::nullopt, false, make<BernoulliLoss>(0.5), make<UniformDelay>(0.0, 1.0)},
-        11, room());
+    Channel c(ChannelConfig{std::nullopt, false, make<BernoulliLoss>(0.5),
+                            make<UniformDelay>(0.0, 1.0), nullptr},
+              11, room());
     std::vector<double> seen;
     for (int i = 0; i < 200; ++i) {
       if (extra_traffic) c.transmit(0, 1, {1, 1}, {2, 1});  // more messages on another link
@@ -107,7 +109,7 @@ TEST_CASE("each link draws from its own streams", "[net]") {
 }
 
 TEST_CASE("range and line of sight", "[net]") {
-  Channel c(ChannelConfig{3.0, true, nullptr, nullptr}, 1, room());
+  Channel c(ChannelConfig{3.0, true, nullptr, nullptr, nullptr}, 1, room());
   CHECK(c.transmit(0, 1, {1, 1}, {3, 1}).outcome == Channel::Outcome::delivered);
   CHECK(c.transmit(0, 1, {1, 1}, {5, 1}).outcome == Channel::Outcome::out_of_range);
   CHECK(c.transmit(0, 1, {3.5, 5}, {6.5, 5}).outcome ==
@@ -115,9 +117,12 @@ TEST_CASE("range and line of sight", "[net]") {
   CHECK(c.in_reach({3.5, 1}, {6.5, 1}));
   CHECK_FALSE(c.in_reach({3.5, 5}, {6.5, 5}));
   CHECK(ChannelConfig{}.is_ideal());
-  CHECK((ChannelConfig{std::nullopt, false, make<NoLoss>(), make<ConstantDelay>(0.0)}.is_ideal()));
-  CHECK_FALSE((ChannelConfig{std::nullopt, false, nullptr, make<ConstantDelay>(0.01)}.is_ideal()));
-  CHECK_FALSE((ChannelConfig{std::nullopt, false, make<BernoulliLoss>(0.0), nullptr}.is_ideal()));
+  CHECK((ChannelConfig{std::nullopt, false, make<NoLoss>(), make<ConstantDelay>(0.0), nullptr}
+             .is_ideal()));
+  CHECK_FALSE(
+      (ChannelConfig{std::nullopt, false, nullptr, make<ConstantDelay>(0.01), nullptr}.is_ideal()));
+  CHECK_FALSE(
+      (ChannelConfig{std::nullopt, false, make<BernoulliLoss>(0.0), nullptr, nullptr}.is_ideal()));
 }
 
 TEST_CASE("neighbour tables keep the newest and drop the stale", "[net]") {

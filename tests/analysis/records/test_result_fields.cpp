@@ -63,7 +63,7 @@ RunMeasures known_run() {
   o.cost_real_in_virtual_partition = 0.13;
   o.fingerprint = 0x0123456789abcdefULL;
   o.decentralized = true;
-  o.network = NetworkTotals{21, 22, 23, 24};
+  o.network = NetworkTotals{21, 22, 23, 24, 0.5, 0.75, RadioTotals{31, 32, 33, 0.25}};
   o.time_to_10_percent = 3.25;
   o.time_to_5_percent = 4.25;
   o.time_to_1_percent = 5.25;
@@ -96,7 +96,10 @@ const ojson kKnownFinal = ojson::parse(R"({
   "cost": {"virtual": 0.11, "real": 0.12, "real_in_virtual_partition": 0.13},
   "fingerprint": "0123456789abcdef",
   "network": {"decentralized": true, "messages_sent": 21, "messages_delivered": 22,
-              "messages_lost": 23, "messages_unreachable": 24},
+              "messages_lost": 23, "messages_unreachable": 24,
+              "delivery_ratio": 1.0476190476190477, "latency_mean": 0.5, "latency_p95": 0.75,
+              "channel_occupancy": 0.25, "phy_drops": 32, "transmissions": 31,
+              "mac_drops": 33},
   "convergence": {"time_to_10_percent": 3.25, "time_to_5_percent": 4.25,
                   "time_to_1_percent": 5.25, "cost_to_best": 1.0625, "path_length": 9.5},
   "failures": {"target_outside_steps": 31, "stalled_time": 0.75,
@@ -118,7 +121,9 @@ const ojson kKnownRun = ojson::parse(R"({
   "area_claimed_by_none": 0.25, "area_claimed_by_several": 0.125, "connected_fraction": 0.875,
   "algebraic_connectivity_min": null, "events": 4321, "stop_reason": "planner_failure",
   "target_outside_steps": 31, "stalled_time": 0.75, "centroid_distance": 0.0125,
-  "planner_step_time": 2.5, "wall_time": 3.5, "fingerprint": "0123456789abcdef"
+  "planner_step_time": 2.5, "wall_time": 3.5, "fingerprint": "0123456789abcdef",
+  "delivery_ratio": 1.0476190476190477, "latency_mean": 0.5, "latency_p95": 0.75,
+  "channel_occupancy": 0.25, "phy_drops": 32
 })");
 
 // docs/outputs.md's table of measures, as measures() gives it.

@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// (This header alone is also under GPL-2.0-or-later, so that the ns-3 peer, which links ns-3's
+// GPL-2.0-only libraries, may include it; the rest of covsim is GPL-3.0-or-later.)
+#pragma once
+// The wire protocol between covsim and its ns-3 co-simulation peer (ns3peer/), version 1.
+// Plain C++17 and the standard library only: both sides compile it. docs/ns3.md describes it.
+//
+// A frame is a little-endian header {u32 type, u32 payload length} and its payload. covsim
+// writes to the peer's standard input, the peer to its standard output; every request has
+// exactly one answer, so neither side ever waits for anything but the answer it asked for.
+//
+//   covsim -> peer                              peer -> covsim
+//   hello    {u32 version, config text}         ready   {u32 version}
+//   step     {i64 until_ns, u32 moves,          arrived {i64 until_ns, u32 count,
+//             moves x {u32 robot, f64 x, f64 y},          count x {i64 at_ns, u32 receiver,
+//             u32 sends,                                           u32 sender, u64 seq}}
+//             sends x {u32 sender, u64 seq,
+//                      u32 bytes}}
+//   query    {}                                 stats   {u64 x 4, f64 x 2} (PeerStats)
+//                                               error   {text}: the peer's last word
+//
+// The peer exits (status 0) when its input ends: covsim closes it at the end of a run.
+// step: the moves and then the sends take place at the peer's current time (the until_ns of
+// the previous step, 0 at first), in the order given; the peer then runs its simulator through
+// every event at or before until_ns and answers with the receptions in that interval, in the
+// order they happened. The config text is "key value" lines (docs/ns3.md lists the keys).
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <type_traits>
+
+namespace covsim::ns3wire {
+
+inline constexpr std::uint32_t kVersion = 1;
+
+enum class FrameType : std::uint32_t {
+  hello = 0x484c4c4f,    // "HLLO"
+  ready = 0x52454459,    // "REDY"
+  step = 0x53544550,     // "STEP"
+  arrived = 0x41525256,  // "ARRV"
+  query = 0x51455259,    // "QERY"
+  stats = 0x53544154,    // "STAT"
+  error = 0x4552524f,    // "ERRO"
+};
+
+// The most a frame's payload may hold: a step of a million robots' moves is under 20 MB.
+inline constexpr std::uint32_t kMaxPayload = 64u << 20;
+
+struct Move {
+  std::uint32_t robot;
+  double x, y;
+};
+struct Send {
+  std::uint32_t sender;
+  std::uint64_t seq;
+  std::uint32_t bytes;  // the message's size on the air, above the MAC
+};
+struct Arrival {
+  std::int64_t at_ns;
+  std::uint32_t receiver, sender;
+  std::uint64_t seq;
+};
+struct PeerStats {
+  std::uint64_t transmissions = 0;  // frames put on the air (PHY transmit starts)
+  std::uint64_t receptions = 0;     // frames received whole (PHY receive ends, OK)
+  std::uint64_t phy_drops = 0;      // receptions that began and failed (PHY drop trace)
+  std::uint64_t mac_drops = 0;      // frames dropped before the air (MAC queue full or stale)
+  double busy_seconds = 0;          // summed over robots: time each radio sensed the air busy
+  double elapsed_seconds = 0;       // the peer's simulated time when asked
+};
+
+// Appends and reads little-endian values (both sides run on little-endian machines; the
+// peer checks the version, and a big-endian host is refused at build time below).
+static_assert(sizeof(double) == 8);
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "the ns-3 wire protocol is little-endian"
+#endif
+
+template <class T>
+void put(std::string& out, T value) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+// Reads from a payload; `ok` turns false (and stays so) past its end.
+class Reader {
+ public:
+  Reader(const char* data, std::size_t size) : p_(data), end_(data + size) {}
+  template <class T>
+  T get() {
+    T value{};
+    if (static_cast<std::size_t>(end_ - p_) < sizeof(T)) {
+      ok_ = false;
+      p_ = end_;
+      return value;
+    }
+    std::memcpy(&value, p_, sizeof(T));
+    p_ += sizeof(T);
+    return value;
+  }
+  std::string rest() {
+    std::string s(p_, end_);
+    p_ = end_;
+    return s;
+  }
+  std::size_t left() const { return static_cast<std::size_t>(end_ - p_); }
+  bool ok() const { return ok_; }
+
+ private:
+  const char* p_;
+  const char* end_;
+  bool ok_ = true;
+};
+
+inline std::string frame(FrameType type, const std::string& payload) {
+  std::string out;
+  put(out, static_cast<std::uint32_t>(type));
+  put(out, static_cast<std::uint32_t>(payload.size()));
+  return out + payload;
+}
+
+}  // namespace covsim::ns3wire
