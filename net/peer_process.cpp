@@ -60,8 +60,8 @@ PeerProcess::PeerProcess(const std::filesystem::path& program, std::vector<std::
 PeerProcess::~PeerProcess() {
   if (fd_ >= 0) ::close(fd_);
   if (pid_ <= 0) return;
-  // The peer exits when its input ends; one that does not within 5 s is killed.
-  for (int i = 0; i < 500; ++i) {
+  // The peer exits when its input ends; one that does not within a second is killed.
+  for (int i = 0; i < 100; ++i) {
     int status = 0;
     if (::waitpid(pid_, &status, WNOHANG) != 0) return;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));

@@ -5,7 +5,7 @@
 // one that cannot start, exits or dies (with its status or signal), answers with an error
 // frame (its text), sends a malformed or oversized frame, or does not answer within the
 // time allowed. SIGINT and SIGTERM interrupt a wait (Interrupted). Destroying the process
-// closes the socket, and a peer that has not exited a few seconds later is killed.
+// closes the socket, and a peer that has not exited a second later is killed.
 #include <sys/types.h>
 
 #include <cstdint>

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "net/channel_registry.hpp"
 #include "scenarios/scenario_sections.hpp"
 
 namespace covsim {
@@ -30,6 +31,10 @@ std::vector<DocTable> scenario_doc_tables() {
   std::vector<DocTable> out;
   for (const ScenarioSection& s : scenario_sections())
     out.push_back({s.path, markdown_table(s.schema())});
+  // A channel model's keys sit in network.channel beside its type (ns3_wifi's radio).
+  for (const ChannelEntry& e : channel_registry().entries()) {
+    if (!e.params.empty()) out.push_back({"network.channel." + e.name, markdown_table(e.params)});
+  }
   return out;
 }
 

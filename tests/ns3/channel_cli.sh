@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# The ns3_wifi channel through the covsim program: a run of the U room converges with its
+# radio measures, repeats bit for bit, replays, and gives the same runs at --jobs 1 and 2;
+# keys the radio decides itself and a rate the standard lacks are exit 2; a peer that cannot
+# start, dies or answers garbage is exit 1 naming it; SIGTERM ends a run waiting on a peer.
+#   channel_cli.sh COVSIM SOURCE_DIR WORK_DIR
+set -euo pipefail
+covsim=$1 src=$2 work=$3
+fail() { echo "FAIL: $*" >&2; exit 1; }
+rm -rf "$work"; mkdir -p "$work"; cd "$work"
+radio='network.channel={"type": "ns3_wifi", "standard": "g"}'
+json() { /usr/bin/python3 -c "import json, sys; print(eval('json.load(open(sys.argv[1]))' + sys.argv[2]))" "$@"; }
+
+"$covsim" run "$src/scenarios/u_shape.json" --set "$radio" --out a --trace a.trace >/dev/null
+"$covsim" run "$src/scenarios/u_shape.json" --set "$radio" --out b >/dev/null
+[ "$(json a/final.json "['converged']")" = True ] || fail "the U room did not converge"
+[ "$(json a/final.json "['fingerprint']")" = "$(json b/final.json "['fingerprint']")" ] ||
+  fail "two runs differ"
+ratio=$(json a/final.json "['network']['delivery_ratio']")
+occupancy=$(json a/final.json "['network']['channel_occupancy']")
+/usr/bin/python3 -c "assert 0.9 <= $ratio <= 1 and 0 < $occupancy < 1" ||
+  fail "radio measures out of range: delivery $ratio, occupancy $occupancy"
+for key in phy_drops transmissions mac_drops latency_mean latency_p95; do
+  [ "$(json a/final.json "['network']['$key']")" != None ] || fail "network.$key is null"
+done
+"$covsim" replay a.trace | grep -q "replay matches" || fail "the trace does not replay"
+
+# A sweep's runs, each with its own peer, are the same at any parallelism.
+cat > sweep.json <<JSON
+{"scenario": "$src/scenarios/u_shape.json",
+ "grid": {"network.channel.type": ["ns3_wifi"], "network.broadcast_period": [0.02, 0.2]},
+ "seeds": [1, 2]}
+JSON
+"$covsim" sweep sweep.json --out s1 --jobs 1 >/dev/null 2>&1
+"$covsim" sweep sweep.json --out s2 --jobs 2 >/dev/null 2>&1
+fingerprints() { /usr/bin/python3 -c "
+import csv, sys; print([r['fingerprint'] for r in csv.DictReader(open(sys.argv[1]))])" "$1"; }
+[ "$(fingerprints s1/runs.csv)" = "$(fingerprints s2/runs.csv)" ] || fail "--jobs changes runs"
+
+# Keys the radio decides, and a mode the standard lacks: bad input.
+set +e
+"$covsim" run "$src/scenarios/u_shape.json" --set "$radio" --set network.range=2 --out r \
+  >/dev/null 2>err.txt
+rc=$?
+set -e
+[ $rc -eq 2 ] && grep -q 'network.range: does not apply to the ns3_wifi channel' err.txt ||
+  fail "network.range with ns3_wifi: exit $rc: $(cat err.txt)"
+set +e
+"$covsim" run "$src/scenarios/u_shape.json" \
+  --set 'network.channel={"type": "ns3_wifi", "standard": "b", "rate": "OfdmRate6Mbps"}' \
+  --out r >/dev/null 2>err.txt
+rc=$?
+set -e
+[ $rc -eq 2 ] && grep -q '802.11b has no mode "OfdmRate6Mbps"' err.txt ||
+  fail "a rate 802.11b lacks: exit $rc: $(cat err.txt)"
+
+# Peers that fail: exit 1 with the peer named and why, and no run folder.
+check_peer() {  # PEER EXPECTED_TEXT
+  set +e
+  COVSIM_NS3_PEER=$1 timeout 60 "$covsim" run "$src/scenarios/u_shape.json" --set "$radio" \
+    --out bad >/dev/null 2>err.txt
+  rc=$?
+  set -e
+  [ $rc -eq 1 ] && grep -q -- "$2" err.txt && [ ! -e bad ] ||
+    fail "peer $1: expected exit 1 with '$2', got $rc: $(cat err.txt)"
+}
+check_peer "$work/no-such-peer" "cannot start"
+check_peer /bin/false "exited with status 1"
+check_peer /usr/bin/yes "more than the protocol allows"
+printf '#!/bin/sh\nkill -SEGV $$\n' > crash.sh && chmod +x crash.sh
+check_peer "$work/crash.sh" "killed by signal 11"
+
+# A peer that never answers: SIGTERM still ends the run, at once.
+printf '#!/bin/sh\nexec sleep 600\n' > mute.sh && chmod +x mute.sh
+set +e
+COVSIM_NS3_PEER=$work/mute.sh "$covsim" run "$src/scenarios/u_shape.json" --set "$radio" \
+  --out mute >/dev/null 2>err.txt &
+pid=$!
+sleep 2
+kill -TERM $pid
+start=$SECONDS
+wait $pid
+rc=$?
+set -e
+[ $rc -eq 143 ] && [ $((SECONDS - start)) -le 10 ] && [ ! -e mute ] ||
+  fail "SIGTERM while the peer is silent: exit $rc after $((SECONDS - start)) s: $(cat err.txt)"
+echo "ok"
