@@ -25,7 +25,7 @@ class TraceSink;
 // A simulator run beside the kernel (a network simulator over a pipe), conservatively: before
 // the kernel dispatches an event at time t it has the peer run to t, and the peer schedules
 // what happened in its run (a reception becomes a delivery event) at those times, which are
-// after the time it last ran to and not after t.
+// not before the time it last ran to and not after t.
 class KernelPeer {
  public:
   virtual ~KernelPeer() = default;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <fmt/ranges.h>
+
 #include <cstdlib>
 #include <stdexcept>
 
@@ -141,8 +143,20 @@ class Ns3WifiChannel final : public ChannelModel {
   explicit Ns3WifiChannel(Ns3WifiConfig c) : config_(std::move(c)) {}
   std::unique_ptr<ChannelSession> open(const ChannelContext& context) const override {
     const auto program = ns3_peer_program();
-    if (!program)
-      throw PeerError("the ns3_wifi channel is unavailable: covsim was built without ns-3");
+    if (!program) {
+      const std::vector<fs::path> looked = ns3_peer_candidates();
+      if (looked.empty())
+        throw PeerError(
+            "the ns3_wifi channel is unavailable: covsim was built without ns-3 (install "
+            "libns3-dev, ns3 and libgsl-dev and build again, or set COVSIM_NS3_PEER)");
+      std::vector<std::string> names;
+      for (const fs::path& p : looked)
+        names.push_back(p.string());
+      throw PeerError(
+          fmt::format("the ns3_wifi channel's peer program is missing (looked for {}): build the "
+                      "covsim-ns3-peer target, or set COVSIM_NS3_PEER",
+                      fmt::join(names, " and ")));
+    }
     auto session =
         std::make_unique<Ns3WifiSession>(*program, ns3_peer_config_text(config_, context));
     session->set_radios(context.positions.size());
@@ -179,16 +193,33 @@ std::string ns3_peer_config_text(const Ns3WifiConfig& c, const ChannelContext& c
   return out;
 }
 
-std::optional<fs::path> ns3_peer_program() {
-  if (const char* env = std::getenv("COVSIM_NS3_PEER"); env != nullptr && *env != '\0')
-    return fs::path(env);
-  std::error_code ec;
+std::vector<fs::path> ns3_peer_candidates() {
+  std::vector<fs::path> out;
+  if (const char* env = std::getenv("COVSIM_NS3_PEER"); env != nullptr && *env != '\0') {
+    out.emplace_back(env);
+    return out;
+  }
 #ifdef COVSIM_NS3_PEER_BUILT
-  if (fs::exists(COVSIM_NS3_PEER_BUILT, ec)) return fs::path(COVSIM_NS3_PEER_BUILT);
+  // A program in the build tree uses the peer built beside it; any other (installed, or a
+  // user's linking the installed library) the installed peer first.
+  std::error_code ec;
+  const std::string self = fs::read_symlink("/proc/self/exe", ec).string();
+  const std::string build_dir = COVSIM_BUILD_DIR;
+  const bool in_build = !ec && self.compare(0, build_dir.size() + 1, build_dir + "/") == 0;
+  if (in_build) out.emplace_back(COVSIM_NS3_PEER_BUILT);
+  out.emplace_back(COVSIM_NS3_PEER_INSTALLED);
+  if (!in_build) out.emplace_back(COVSIM_NS3_PEER_BUILT);
 #endif
-#ifdef COVSIM_NS3_PEER_INSTALLED
-  if (fs::exists(COVSIM_NS3_PEER_INSTALLED, ec)) return fs::path(COVSIM_NS3_PEER_INSTALLED);
-#endif
+  return out;
+}
+
+std::optional<fs::path> ns3_peer_program() {
+  const std::vector<fs::path> candidates = ns3_peer_candidates();
+  if (candidates.size() == 1) return candidates.front();  // $COVSIM_NS3_PEER, as given
+  for (const fs::path& p : candidates) {
+    std::error_code ec;
+    if (fs::exists(p, ec)) return p;
+  }
   return std::nullopt;
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "net/channel_model.hpp"
 
@@ -29,8 +30,11 @@ struct Ns3WifiConfig {
 // The "key value" lines of the hello frame (net/ns3_wire.hpp) for a run.
 std::string ns3_peer_config_text(const Ns3WifiConfig& config, const ChannelContext& context);
 
-// The peer program: $COVSIM_NS3_PEER, else the one built beside covsim, else the installed
-// one; nullopt if there is none (covsim built without ns-3).
+// Where the peer program may be, in order: $COVSIM_NS3_PEER alone if set; else, for a program
+// running from the build tree, the peer built there and then the installed one, and for any
+// other the installed one first. Empty when covsim was built without ns-3.
+std::vector<std::filesystem::path> ns3_peer_candidates();
+// The first candidate that exists ($COVSIM_NS3_PEER as given); nullopt if none does.
 std::optional<std::filesystem::path> ns3_peer_program();
 
 ChannelEntry ns3_wifi_channel_entry();

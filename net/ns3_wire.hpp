@@ -22,10 +22,13 @@
 // The peer exits (status 0) when its input ends: covsim closes it at the end of a run.
 // step: the moves and then the sends take place at the peer's current time (the until_ns of
 // the previous step, 0 at first), in the order given; the peer then runs its simulator through
-// every event at or before until_ns and answers with the receptions in that interval, in the
-// order they happened. The config text is "key value" lines (docs/ns3.md lists the keys).
+// its events up to until_ns and answers with the receptions they made, in the order they
+// happened. An event the run schedules for exactly until_ns itself runs in the next step, so
+// a reception may carry the previous step's until_ns (never an earlier time). The config text is
+// "key value" lines (docs/ns3.md lists the keys).
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <type_traits>
 
@@ -69,19 +72,27 @@ struct PeerStats {
   double elapsed_seconds = 0;       // the peer's simulated time when asked
 };
 
-// Appends and reads little-endian values (both sides run on little-endian machines; the
-// peer checks the version, and a big-endian host is refused at build time below).
-static_assert(sizeof(double) == 8);
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
-#error "the ns-3 wire protocol is little-endian"
-#endif
+// Values on the wire are little-endian whatever the host: integers byte by byte, a double as
+// its IEEE 754 bits.
+static_assert(sizeof(double) == 8 && std::numeric_limits<double>::is_iec559);
+
+template <class T>
+std::uint64_t bits_of(T value) {
+  static_assert(std::is_integral_v<T> || std::is_same_v<T, double>);
+  if constexpr (std::is_same_v<T, double>) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+  } else {
+    return static_cast<std::uint64_t>(value);
+  }
+}
 
 template <class T>
 void put(std::string& out, T value) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  out.append(bytes, sizeof(T));
+  const std::uint64_t bits = bits_of(value);
+  for (std::size_t k = 0; k < sizeof(T); ++k)
+    out.push_back(static_cast<char>((bits >> (8 * k)) & 0xff));
 }
 
 // Reads from a payload; `ok` turns false (and stays so) past its end.
@@ -90,15 +101,22 @@ class Reader {
   Reader(const char* data, std::size_t size) : p_(data), end_(data + size) {}
   template <class T>
   T get() {
-    T value{};
     if (static_cast<std::size_t>(end_ - p_) < sizeof(T)) {
       ok_ = false;
       p_ = end_;
-      return value;
+      return T{};
     }
-    std::memcpy(&value, p_, sizeof(T));
+    std::uint64_t bits = 0;
+    for (std::size_t k = 0; k < sizeof(T); ++k)
+      bits |= std::uint64_t{static_cast<unsigned char>(p_[k])} << (8 * k);
     p_ += sizeof(T);
-    return value;
+    if constexpr (std::is_same_v<T, double>) {
+      double value;
+      std::memcpy(&value, &bits, sizeof value);
+      return value;
+    } else {
+      return static_cast<T>(bits);
+    }
   }
   std::string rest() {
     std::string s(p_, end_);
@@ -113,6 +131,16 @@ class Reader {
   const char* end_;
   bool ok_ = true;
 };
+
+// A frame's header {u32 type, u32 length}, as read from its 8 bytes.
+struct FrameHeader {
+  std::uint32_t type, length;
+};
+inline FrameHeader frame_header(const char (&bytes)[8]) {
+  Reader r(bytes, 8);
+  const auto type = r.get<std::uint32_t>();
+  return FrameHeader{type, r.get<std::uint32_t>()};
+}
 
 inline std::string frame(FrameType type, const std::string& payload) {
   std::string out;

@@ -124,16 +124,17 @@ void PeerProcess::read_exactly(char* data, std::size_t size) {
 }
 
 std::uint32_t PeerProcess::receive(std::string& payload) {
-  std::uint32_t header[2];
-  read_exactly(reinterpret_cast<char*>(header), sizeof header);
-  if (header[1] > ns3wire::kMaxPayload)
-    throw PeerError(name_ + ": answered with a frame of " + std::to_string(header[1]) +
+  char bytes[8];
+  read_exactly(bytes, sizeof bytes);
+  const ns3wire::FrameHeader header = ns3wire::frame_header(bytes);
+  if (header.length > ns3wire::kMaxPayload)
+    throw PeerError(name_ + ": answered with a frame of " + std::to_string(header.length) +
                     " bytes, more than the protocol allows (not a covsim peer?)");
-  payload.resize(header[1]);
+  payload.resize(header.length);
   read_exactly(payload.data(), payload.size());
-  if (header[0] == static_cast<std::uint32_t>(ns3wire::FrameType::error))
+  if (header.type == static_cast<std::uint32_t>(ns3wire::FrameType::error))
     died("it reported: " + payload);
-  return header[0];
+  return header.type;
 }
 
 }  // namespace covsim

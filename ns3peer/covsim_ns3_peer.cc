@@ -70,11 +70,12 @@ void write_all(const std::string& bytes) {
 
 // The next frame; false at the end of the input (covsim closed it).
 bool read_frame(wire::FrameType& type, std::string& payload) {
-  std::uint32_t header[2];
-  if (!read_all(header, sizeof header)) return false;
-  if (header[1] > wire::kMaxPayload) fail("a frame larger than the protocol allows");
-  type = static_cast<wire::FrameType>(header[0]);
-  payload.resize(header[1]);
+  char bytes[8];
+  if (!read_all(bytes, sizeof bytes)) return false;
+  const wire::FrameHeader header = wire::frame_header(bytes);
+  if (header.length > wire::kMaxPayload) fail("a frame larger than the protocol allows");
+  type = static_cast<wire::FrameType>(header.type);
+  payload.resize(header.length);
   if (!read_all(payload.data(), payload.size())) fail("the input ends inside a frame");
   return true;
 }
@@ -98,7 +99,8 @@ void on_tx_begin(ns3::Ptr<const ns3::Packet>, double) {
 void on_rx_drop(ns3::Ptr<const ns3::Packet>, ns3::WifiPhyRxfailureReason) {
   ++peer.stats.phy_drops;
 }
-void on_mac_drop(ns3::Ptr<const ns3::Packet>) {
+// Frames the MAC gave up before the air: its queue full, or a frame older than its limit.
+void on_mac_drop(ns3::WifiMacDropReason, ns3::Ptr<const ns3::WifiMpdu>) {
   ++peer.stats.mac_drops;
 }
 void on_state(ns3::Time, ns3::Time duration, WifiPhyState state) {
@@ -134,7 +136,10 @@ void build(const PeerConfig& c) {
     m->SetReference(c.reference_distance, c.reference_loss_db);
     loss = m;
   } else if (c.propagation == "friis") {
-    loss = ns3::CreateObject<ns3::FriisPropagationLossModel>();
+    auto m = ns3::CreateObject<ns3::FriisPropagationLossModel>();
+    // 802.11b and g use the 2.4 GHz band (channel 1); a and n ns-3's default 5.15 GHz.
+    if (c.standard == "b" || c.standard == "g") m->SetFrequency(2.412e9);
+    loss = m;
   } else if (c.propagation == "range") {
     auto m = ns3::CreateObject<ns3::RangePropagationLossModel>();
     m->SetAttribute("MaxRange", ns3::DoubleValue(c.max_range));
@@ -190,7 +195,7 @@ void build(const PeerConfig& c) {
     wd->GetPhy()->TraceConnectWithoutContext("PhyTxBegin", ns3::MakeCallback(&on_tx_begin));
     wd->GetPhy()->TraceConnectWithoutContext("PhyRxDrop", ns3::MakeCallback(&on_rx_drop));
     wd->GetPhy()->GetState()->TraceConnectWithoutContext("State", ns3::MakeCallback(&on_state));
-    wd->GetMac()->TraceConnectWithoutContext("MacTxDrop", ns3::MakeCallback(&on_mac_drop));
+    wd->GetMac()->TraceConnectWithoutContext("DroppedMpdu", ns3::MakeCallback(&on_mac_drop));
     peer.devices.push_back(d);
     peer.mobility.push_back(nodes.Get(i)->GetObject<ns3::MobilityModel>());
     peer.mobility.back()->SetPosition(ns3::Vector(c.x[i], c.y[i], 0.0));

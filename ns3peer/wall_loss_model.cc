@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "wall_loss_model.h"
 
+#include <algorithm>
+
 #include "ns3/mobility-model.h"
 
 namespace covsim_peer {
@@ -17,24 +19,38 @@ void WallLossModel::SetWalls(std::vector<Wall> walls, double loss_db) {
   loss_db_ = loss_db;
 }
 
-namespace {
-double cross(double ax, double ay, double bx, double by, double cx, double cy) {
-  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-}
-}  // namespace
-
 int WallLossModel::WallsBetween(double ax, double ay, double bx, double by) const {
-  int crossings = 0;
+  // Where the segment meets the edges, as fractions of its length.
+  std::vector<double> cuts{0.0, 1.0};
+  const double dx = bx - ax, dy = by - ay;
   for (const Wall& w : walls_) {
-    const double d1 = cross(ax, ay, bx, by, w.x1, w.y1);
-    const double d2 = cross(ax, ay, bx, by, w.x2, w.y2);
-    const double d3 = cross(w.x1, w.y1, w.x2, w.y2, ax, ay);
-    const double d4 = cross(w.x1, w.y1, w.x2, w.y2, bx, by);
-    // Proper crossings only: a link along an edge or through a vertex grazes, not passes.
-    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-      ++crossings;
+    const double ex = w.x2 - w.x1, ey = w.y2 - w.y1;
+    const double denom = dx * ey - dy * ex;
+    if (denom == 0) continue;  // parallel: an overlap adds no passage of its own
+    const double t = ((w.x1 - ax) * ey - (w.y1 - ay) * ex) / denom;
+    const double u = ((w.x1 - ax) * dy - (w.y1 - ay) * dx) / denom;
+    if (t > 0 && t < 1 && u >= 0 && u <= 1) cuts.push_back(t);
   }
-  return (crossings + 1) / 2;
+  std::sort(cuts.begin(), cuts.end());
+  int walls = 0;
+  bool outside_before = false;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    if (cuts[k + 1] - cuts[k] <= 1e-12) continue;
+    const double m = 0.5 * (cuts[k] + cuts[k + 1]);
+    const bool outside = !InsideOmega(ax + m * dx, ay + m * dy);
+    if (outside && !outside_before) ++walls;
+    outside_before = outside;
+  }
+  return walls;
+}
+
+bool WallLossModel::InsideOmega(double x, double y) const {
+  bool inside = false;
+  for (const Wall& w : walls_) {
+    if ((w.y1 > y) != (w.y2 > y) && x < w.x1 + (y - w.y1) / (w.y2 - w.y1) * (w.x2 - w.x1))
+      inside = !inside;
+  }
+  return inside;
 }
 
 double WallLossModel::DoCalcRxPower(double txPowerDbm, ns3::Ptr<ns3::MobilityModel> a,

@@ -97,7 +97,7 @@ class CoverageController {
   CoverageLaw& law() { return *law_; }
   const NeighborView& view() const { return *view_; }
   bool decentralized() const { return view_->decentralized(); }
-  NetworkTotals network_totals() const { return view_->totals(); }
+  NetworkTotals network_totals(bool radio = false) const { return view_->totals(radio); }
   SimTime now() const { return kernel_.now(); }
   const Tolerances& tolerances() const { return tol_; }
   // Every robot's virtual generator and position now, and their partitions (computed once

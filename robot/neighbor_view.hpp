@@ -37,7 +37,9 @@ class NeighborView {
   virtual void moved(std::uint32_t) {}
   // What robot i knows of the generators of that kind; valid until the view's next call.
   virtual Knowledge knowledge(std::uint32_t i, Generators kind) const = 0;
-  virtual NetworkTotals totals() const { return {}; }
+  // The message counts; with `radio`, also a simulated radio's counts (a round trip to it,
+  // asked for the outcome, not at every metrics sample).
+  virtual NetworkTotals totals(bool /*radio*/ = false) const { return {}; }
 };
 
 }  // namespace covsim

@@ -46,14 +46,14 @@ NetworkedView::~NetworkedView() {
   if (session_) kernel_.attach_peer(nullptr);
 }
 
-NetworkTotals NetworkedView::totals() const {
+NetworkTotals NetworkedView::totals(bool radio) const {
   NetworkTotals t = totals_;
   t.latency_mean = latency_.mean();
   t.latency_p95 = latency_.quantile(0.95);
   if (session_) {
     // Not received is lost: the radio does not say which receiver was out of reach.
     t.lost = t.sent - t.delivered;
-    t.radio = session_->totals();
+    if (radio) t.radio = session_->totals();
   }
   return t;
 }

@@ -43,7 +43,7 @@ class NetworkedView final : public NeighborView, private KernelPeer {
   void refresh(std::uint32_t i) override;
   void moved(std::uint32_t i) override;
   Knowledge knowledge(std::uint32_t i, Generators kind) const override;
-  NetworkTotals totals() const override;
+  NetworkTotals totals(bool radio = false) const override;
 
   const Channel& channel() const { return *channel_; }
   const NetworkConfig& config() const { return config_; }

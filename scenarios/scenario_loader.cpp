@@ -128,7 +128,8 @@ void read_components(const JsonValue& root, CoverageConfig& c) {
       // beside it would be silently ignored.
       if (const auto& model = c.network.channel.model) {
         for (const std::string& key : model->replaces()) {
-          if (auto v = n->find(key); v && !v->is_null())
+          // null, or false for line_of_sight, states the abstract channel's default: allowed.
+          if (auto v = n->find(key); v && !v->is_null() && v->raw() != false)
             v->fail(fmt::format("does not apply to the {} channel, which decides it itself",
                                 choice.type));
         }

@@ -55,8 +55,24 @@ NetworkSample NetworkMetrics::sample(const CoverageController& c) const {
     s.graph = complete_graph_metrics(n);
     return s;
   }
-  s.graph = comm_graph_metrics(n, communication_edges(net->channel(), positions),
-                               n <= c.config().algebraic_connectivity_robots);
+  if (net->config().channel.model) {
+    // A simulated radio has no reach to ask: two robots are linked when either has heard the
+    // other within the last two broadcast periods (send time to now).
+    const SimTime window = SimTime::from_ns(2 * net->config().broadcast_period.ns());
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (std::uint32_t i = 0; i < net->tables().size(); ++i) {
+      for (const StateMessage& m : net->tables()[i].entries()) {
+        if (c.now() - m.sent <= window)
+          edges.emplace_back(std::min(i, m.sender), std::max(i, m.sender));
+      }
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    s.graph = comm_graph_metrics(n, edges, n <= c.config().algebraic_connectivity_robots);
+  } else {
+    s.graph = comm_graph_metrics(n, communication_edges(net->channel(), positions),
+                                 n <= c.config().algebraic_connectivity_robots);
+  }
   double sum = 0.0;
   std::size_t count = 0;
   // Entries past the staleness limit are as good as gone (loop 1 drops them before use).

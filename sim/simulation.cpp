@@ -161,7 +161,7 @@ CoverageOutcome Simulation::outcome() const {
   out.cost_real_in_virtual_partition = virtual_partition.cost(c.positions());
   out.cost_real = last.cost();
   out.decentralized = c.decentralized();
-  out.network = c.network_totals();
+  out.network = c.network_totals(true);
   out.fingerprint = kernel_->fingerprint().value();
   const auto& series = observers_->series;
   out.time_to_10_percent = settling_time(series, 0.10);

@@ -185,7 +185,10 @@ const std::vector<Measure>& measures() {
       messages("network.messages_delivered", "messages delivered", &NetworkTotals::delivered)
           .in_runs(11)
           .in_summary(),
-      messages("network.messages_lost", "messages lost by the loss model", &NetworkTotals::lost)
+      messages("network.messages_lost",
+               "messages lost by the loss model (a simulated radio: not received, those still "
+               "on the air at the end included)",
+               &NetworkTotals::lost)
           .in_runs(12)
           .in_summary(),
       messages("network.messages_unreachable", "messages out of range or blocked by walls",

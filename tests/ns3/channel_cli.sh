@@ -37,7 +37,34 @@ fingerprints() { /usr/bin/python3 -c "
 import csv, sys; print([r['fingerprint'] for r in csv.DictReader(open(sys.argv[1]))])" "$1"; }
 [ "$(fingerprints s1/runs.csv)" = "$(fingerprints s2/runs.csv)" ] || fail "--jobs changes runs"
 
-# Keys the radio decides, and a mode the standard lacks: bad input.
+# Walls: robots held still, A and C in one room, B beyond a wall (or on its far face, as a
+# robot settled at a projection is). A loss of 200 dB per wall leaves A <-> C alone: 2 of 6
+# links; no loss, all 6.
+for b in "[8, 2]" "[5.1, 2]"; do
+  for wall_loss in 0 200; do
+    cat > wall.json <<JSON
+{"environment": {"outer": [[0, 0], [10, 0], [10, 4], [0, 4]],
+                 "holes": [[[4.9, 0.5], [5.1, 0.5], [5.1, 3.5], [4.9, 3.5]]]},
+ "density": {"type": "uniform"}, "robots": {"positions": [[2, 2], [3, 2], $b]},
+ "controller": {"type": "external"}, "convergence": {"max_time": 5}, "seed": 1,
+ "network": {"channel": {"type": "ns3_wifi", "standard": "g", "wall_loss": $wall_loss}}}
+JSON
+    "$covsim" run wall.json --out wall >/dev/null
+    want=$([ "$wall_loss" = 0 ] && echo 1.0 || echo 0.3333333333333333)
+    [ "$(json wall/final.json "['network']['delivery_ratio']")" = "$want" ] ||
+      fail "B at $b, $wall_loss dB per wall: delivery $(json wall/final.json "['network']")"
+    # The communication graph is who hears whom: B cut off behind the wall is a component.
+    components=$(/usr/bin/python3 -c "
+import csv; print(list(csv.DictReader(open('wall/metrics.csv')))[-1]['components'])")
+    [ "$components" = "$([ "$wall_loss" = 0 ] && echo 1 || echo 2)" ] ||
+      fail "B at $b, $wall_loss dB per wall: $components components"
+  done
+done
+
+# Keys the radio decides, and a mode the standard lacks: bad input; the abstract channel's
+# defaults stated beside it are not.
+"$covsim" run "$src/scenarios/u_shape.json" --set "$radio" --set network.line_of_sight=false \
+  --out los >/dev/null || fail "line_of_sight=false beside ns3_wifi refused"
 set +e
 "$covsim" run "$src/scenarios/u_shape.json" --set "$radio" --set network.range=2 --out r \
   >/dev/null 2>err.txt
