@@ -125,10 +125,7 @@ bool Kernel::dispatch_next_with_peer(SimTime not_after) {
     const std::optional<SimTime> bound = queue_.earliest_bound();
     const SimTime target = bound ? std::min(*bound, not_after) : not_after;
     if (target == SimTime::max()) return false;  // nothing pending and no limit
-    if (target > peer_time_) {
-      peer_time_ = target;
-      peer_->advance_to(*this, target);
-    }
+    if (target > peer_time_) peer_time_ = peer_->advance_to(*this, target, not_after);
     // Only events the peer has caught up with: the bound may be a cancelled entry's time.
     if (pop_and_dispatch(std::min(not_after, peer_time_))) return true;
     if (!bound || *bound >= not_after) return false;

@@ -25,11 +25,13 @@ class TraceSink;
 // A simulator run beside the kernel (a network simulator over a pipe), conservatively: before
 // the kernel dispatches an event at time t it has the peer run to t, and the peer schedules
 // what happened in its run (a reception becomes a delivery event) at those times, which are
-// not before the time it last ran to and not after t.
+// not before the time it last ran to and not after the time it reached. A peer that knows it
+// will be given nothing new before a later time (its next input) may run on to it, but not
+// past `limit` (a run_until's time); it returns the time it reached.
 class KernelPeer {
  public:
   virtual ~KernelPeer() = default;
-  virtual void advance_to(Kernel& kernel, SimTime t) = 0;
+  virtual SimTime advance_to(Kernel& kernel, SimTime t, SimTime limit) = 0;
 };
 
 using Handler = std::function<void(Kernel&, const Event&)>;
@@ -103,7 +105,10 @@ class Kernel {
   // Records every dispatched event; the sink must outlive the runs it records.
   void attach_trace(TraceSink* trace) { trace_ = trace; }
   // Runs `peer` in step with the kernel (see KernelPeer); it must outlive the runs. One peer.
-  void attach_peer(KernelPeer* peer) { peer_ = peer; }
+  void attach_peer(KernelPeer* peer) {
+    peer_ = peer;
+    peer_time_ = now_ - SimTime::from_ns(1);  // it has run to nothing yet
+  }
 
   // The random stream for (this run's seed, entity, purpose).
   RandomStream stream(std::uint64_t entity, std::string_view purpose) const {

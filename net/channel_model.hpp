@@ -42,11 +42,15 @@ struct RadioTotals {
 class ChannelSession {
  public:
   virtual ~ChannelSession() = default;
-  // Robot `sender` broadcasts its message `seq`, `bytes` long, now (the last advance's time).
-  virtual void broadcast(std::uint32_t sender, std::uint64_t seq, std::uint32_t bytes) = 0;
+  // Robot `sender` will broadcast its message `seq`, `bytes` long, at time `at` (not before
+  // the last advance's time): announced ahead, as a broadcast's time, number and size are
+  // known before its content. Announcements of one time come in the order they are sent.
+  virtual void broadcast(std::uint32_t sender, std::uint64_t seq, std::uint32_t bytes,
+                         SimTime at) = 0;
+  // Robot `robot` is at `position` from the last advance's time on.
   virtual void moved(std::uint32_t robot, Vec2 position) = 0;
-  // Runs the channel to t and appends the receptions after the last advance's time and not
-  // after t, in the order they happened.
+  // Applies the moves, then the broadcasts, and runs the channel to t; appends the receptions
+  // from the last advance's time to t, in the order they happened.
   virtual void advance(SimTime t, std::vector<Reception>& out) = 0;
   virtual RadioTotals totals() = 0;
 };

@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 
 #include "net/ns3_wire.hpp"
@@ -41,9 +42,15 @@ class Ns3WifiSession final : public ChannelSession {
  public:
   Ns3WifiSession(const fs::path& program, const std::string& config)
       : peer_(program, {}, kAnswerTimeout) {
+    // Every frame sent, for `covsim-ns3-peer --replay FILE` (ns-3 alone with this traffic).
+    if (const char* file = std::getenv("COVSIM_NS3_RECORD"); file != nullptr && *file != '\0') {
+      record_.open(file, std::ios::binary | std::ios::trunc);
+      if (!record_)
+        throw PeerError(std::string(file) + ": cannot open for writing (COVSIM_NS3_RECORD)");
+    }
     std::string hello;
     ns3wire::put(hello, ns3wire::kVersion);
-    peer_.send(static_cast<std::uint32_t>(ns3wire::FrameType::hello), hello + config);
+    send(ns3wire::FrameType::hello, hello + config);
     std::string payload;
     expect(ns3wire::FrameType::ready, payload);
     ns3wire::Reader r(payload.data(), payload.size());
@@ -53,11 +60,13 @@ class Ns3WifiSession final : public ChannelSession {
                                   version, ns3wire::kVersion));
   }
 
-  void broadcast(std::uint32_t sender, std::uint64_t seq, std::uint32_t bytes) override {
+  void broadcast(std::uint32_t sender, std::uint64_t seq, std::uint32_t bytes,
+                 SimTime at) override {
     ++sends_;
     ns3wire::put(send_bytes_, sender);
     ns3wire::put(send_bytes_, seq);
     ns3wire::put(send_bytes_, bytes);
+    ns3wire::put(send_bytes_, at.ns());
   }
 
   void moved(std::uint32_t robot, Vec2 p) override {
@@ -77,7 +86,7 @@ class Ns3WifiSession final : public ChannelSession {
     moves_ = sends_ = 0;
     move_bytes_.clear();
     send_bytes_.clear();
-    peer_.send(static_cast<std::uint32_t>(ns3wire::FrameType::step), step);
+    send(ns3wire::FrameType::step, step);
     std::string payload;
     expect(ns3wire::FrameType::arrived, payload);
     ns3wire::Reader r(payload.data(), payload.size());
@@ -100,7 +109,7 @@ class Ns3WifiSession final : public ChannelSession {
   }
 
   RadioTotals totals() override {
-    peer_.send(static_cast<std::uint32_t>(ns3wire::FrameType::query), {});
+    send(ns3wire::FrameType::query, {});
     std::string payload;
     expect(ns3wire::FrameType::stats, payload);
     ns3wire::Reader r(payload.data(), payload.size());
@@ -124,6 +133,15 @@ class Ns3WifiSession final : public ChannelSession {
   void set_radios(std::size_t n) { radios_ = static_cast<double>(n); }
 
  private:
+  void send(ns3wire::FrameType type, const std::string& payload) {
+    peer_.send(static_cast<std::uint32_t>(type), payload);
+    if (record_.is_open()) {
+      record_ << ns3wire::frame(type, payload);
+      if (!record_)
+        throw PeerError("cannot write the record of the peer's frames (COVSIM_NS3_RECORD)");
+    }
+  }
+
   void expect(ns3wire::FrameType type, std::string& payload) {
     const std::uint32_t got = peer_.receive(payload);
     if (got != static_cast<std::uint32_t>(type))
@@ -132,6 +150,7 @@ class Ns3WifiSession final : public ChannelSession {
   }
 
   PeerProcess peer_;
+  std::ofstream record_;
   std::uint32_t moves_ = 0, sends_ = 0;
   std::string move_bytes_, send_bytes_;
   SimTime last_;

@@ -15,15 +15,16 @@
 //             moves x {u32 robot, f64 x, f64 y},          count x {i64 at_ns, u32 receiver,
 //             u32 sends,                                           u32 sender, u64 seq}}
 //             sends x {u32 sender, u64 seq,
-//                      u32 bytes}}
+//                      u32 bytes, i64 at_ns}}
 //   query    {}                                 stats   {u64 x 4, f64 x 2} (PeerStats)
 //                                               error   {text}: the peer's last word
 //
 // The peer exits (status 0) when its input ends: covsim closes it at the end of a run.
-// step: the moves and then the sends take place at the peer's current time (the until_ns of
-// the previous step, 0 at first), in the order given; the peer then runs its simulator through
-// its events up to until_ns and answers with the receptions they made, in the order they
-// happened. An event the run schedules for exactly until_ns itself runs in the next step, so
+// step: the moves take place at the peer's current time (the until_ns of the previous step, 0
+// at first), in the order given; each send is then scheduled at its at_ns (not before the
+// current time; sends of one time in the order given); the peer then runs its simulator
+// through its events up to until_ns and answers with the receptions they made, in the order
+// they happened. An event the run schedules for exactly until_ns itself runs in the next step, so
 // a reception may carry the previous step's until_ns (never an earlier time). The config text is
 // "key value" lines (docs/ns3.md lists the keys).
 #include <cstdint>
@@ -57,6 +58,7 @@ struct Send {
   std::uint32_t sender;
   std::uint64_t seq;
   std::uint32_t bytes;  // the message's size on the air, above the MAC
+  std::int64_t at_ns;   // when it is sent
 };
 struct Arrival {
   std::int64_t at_ns;

@@ -4,6 +4,10 @@
 // it per run and drives it over its standard input and output with the frames of
 // net/ns3_wire.hpp: one ad hoc 802.11 node per robot, broadcasts of the sizes covsim gives,
 // positions as covsim moves the robots, and the receptions back with their times.
+//
+// covsim-ns3-peer --replay FILE: reads the frames from FILE instead (as covsim wrote them with
+// COVSIM_NS3_RECORD=FILE) and answers none: ns-3 alone with a run's traffic.
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -35,11 +39,13 @@ struct PeerState {
   wire::PeerStats stats;
 };
 PeerState peer;
+int input = 0;          // the frames' source: standard input, or the replayed file
+bool answering = true;  // false when replaying
 
 bool read_all(void* data, std::size_t size) {
   auto* p = static_cast<char*>(data);
   while (size > 0) {
-    const ssize_t n = ::read(0, p, size);
+    const ssize_t n = ::read(input, p, size);
     if (n == 0) return false;
     if (n < 0) {
       if (errno == EINTR) continue;
@@ -52,6 +58,7 @@ bool read_all(void* data, std::size_t size) {
 }
 
 void write_all(const std::string& bytes) {
+  if (!answering) return;
   const char* p = bytes.data();
   std::size_t size = bytes.size();
   while (size > 0) {
@@ -64,6 +71,7 @@ void write_all(const std::string& bytes) {
 }
 
 [[noreturn]] void fail(const std::string& what) {
+  if (!answering) std::fprintf(stderr, "covsim-ns3-peer: %s\n", what.c_str());
   write_all(wire::frame(wire::FrameType::error, what));
   std::exit(1);
 }
@@ -226,15 +234,20 @@ void step(const std::string& payload) {
     peer.mobility[robot]->SetPosition(ns3::Vector(x, y, 0.0));
   }
   const auto sends = r.get<std::uint32_t>();
-  if (!r.ok() || r.left() != std::size_t{sends} * 16) fail("a malformed step frame");
+  if (!r.ok() || r.left() != std::size_t{sends} * 24) fail("a malformed step frame");
+  const ns3::Time now = ns3::Simulator::Now();
   for (std::uint32_t k = 0; k < sends; ++k) {
     const auto sender = r.get<std::uint32_t>();
     const auto seq = r.get<std::uint64_t>();
     const auto bytes = r.get<std::uint32_t>();
+    const auto at = r.get<std::int64_t>();
     if (sender >= peer.devices.size() || bytes > 2304) fail("a malformed send");
-    send(sender, seq, bytes);
+    if (at < now.GetNanoSeconds()) fail("a send before the peer's time");
+    if (at == now.GetNanoSeconds())
+      send(sender, seq, bytes);
+    else
+      ns3::Simulator::Schedule(ns3::NanoSeconds(at) - now, &send, sender, seq, bytes);
   }
-  const ns3::Time now = ns3::Simulator::Now();
   if (until < now.GetNanoSeconds()) fail("a step back in time");
   if (until > now.GetNanoSeconds()) {
     ns3::Simulator::Stop(ns3::NanoSeconds(until) - now);
@@ -255,7 +268,18 @@ void step(const std::string& payload) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--replay") {
+    input = ::open(argv[2], O_RDONLY | O_CLOEXEC);
+    answering = false;
+    if (input < 0) {
+      std::fprintf(stderr, "covsim-ns3-peer: cannot open %s\n", argv[2]);
+      return 2;
+    }
+  } else if (argc != 1) {
+    std::fprintf(stderr, "usage: covsim-ns3-peer [--replay FILE] (covsim starts it)\n");
+    return 2;
+  }
   try {
     wire::FrameType type{};
     std::string payload;

@@ -71,6 +71,7 @@ void CoverageController::start() {
                               loop2_kind_, i, event_class::loop2);
   }
   sensor_->start(t0);
+  view_->motion_clock(t0 + config_.loop2_period, config_.loop2_period);
   view_->start(t0);
   kernel_.schedule_periodic(Period::from_ns(config_.sample_period.ns()), t0, sample_kind_,
                             event_class::world, event_class::sample);

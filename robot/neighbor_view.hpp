@@ -35,6 +35,8 @@ class NeighborView {
   virtual void refresh(std::uint32_t i) = 0;
   // Robot i's position has changed (after its motion step).
   virtual void moved(std::uint32_t) {}
+  // When the motion steps (loop 2) come: at first + k period, k = 0, 1, ...; told before start.
+  virtual void motion_clock(SimTime /*first*/, SimTime /*period*/) {}
   // What robot i knows of the generators of that kind; valid until the view's next call.
   virtual Knowledge knowledge(std::uint32_t i, Generators kind) const = 0;
   // The message counts; with `radio`, also a simulated radio's counts (a round trip to it,

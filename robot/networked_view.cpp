@@ -36,6 +36,8 @@ NetworkedView::NetworkedView(Kernel& kernel, const Environment& env, const Netwo
       for (std::uint32_t slot : inbox)
         receive(ev.entity, slot);
       inbox.clear();
+    } else if (session_) {
+      receive_radio(ev.entity, static_cast<std::uint32_t>(ev.payload));
     } else {
       receive(ev.entity, static_cast<std::uint32_t>(ev.payload));
     }
@@ -58,20 +60,75 @@ NetworkTotals NetworkedView::totals(bool radio) const {
   return t;
 }
 
-void NetworkedView::advance_to(Kernel& k, SimTime t) {
-  receptions_.clear();
-  session_->advance(t, receptions_);
-  for (const Reception& r : receptions_) {
-    if (r.sender >= sent_.size() || r.receiver >= sent_.size() || r.receiver == r.sender)
-      throw std::runtime_error("the simulated radio reported a reception between unknown robots");
-    const std::deque<StateMessage>& history = sent_[r.sender];
-    if (history.empty() || r.seq < history.front().seq || r.seq > history.back().seq)
-      throw std::runtime_error("the simulated radio reported a message covsim no longer holds");
-    const std::uint32_t slot = new_slot(history[r.seq - history.front().seq]);
-    in_flight_[slot].deliveries = 1;
-    ++totals_.delivered;
-    k.schedule_at(r.at, deliver_kind_, r.receiver, event_class::deliver, slot);
+void NetworkedView::motion_clock(SimTime first, SimTime period) {
+  motion_first_ = first;
+  motion_period_ = period;
+}
+
+SimTime NetworkedView::advance_to(Kernel& k, SimTime t, SimTime limit) {
+  // The next motion step at or after t: the radio gets nothing new before it.
+  SimTime until = t;
+  if (motion_period_ > SimTime::zero() && t > motion_first_) {
+    const std::int64_t p = motion_period_.ns();
+    const std::int64_t steps = (t.ns() - motion_first_.ns() + p - 1) / p;
+    until = SimTime::from_ns(motion_first_.ns() + steps * p);
+  } else if (motion_period_ > SimTime::zero()) {
+    until = motion_first_;
   }
+  until = std::max(t, std::min(until, limit));
+  // Every broadcast before `until`, by time and then robot (the kernel's order at one time).
+  struct Announced {
+    SimTime at;
+    std::uint32_t sender;
+    std::uint64_t seq;
+  };
+  std::vector<Announced> sends;
+  const std::int64_t period = config_.broadcast_period.ns();
+  for (std::uint32_t i = 0; i < phases_.size(); ++i) {
+    for (;;) {
+      const SimTime at =
+          phases_[i] + SimTime::from_ns(static_cast<std::int64_t>(announced_[i]) * period);
+      if (at >= until) break;
+      sends.push_back({at, i, announced_[i]++});
+    }
+  }
+  std::sort(sends.begin(), sends.end(), [](const Announced& a, const Announced& b) {
+    return a.at != b.at ? a.at < b.at : a.sender < b.sender;
+  });
+  for (const Announced& s : sends)
+    session_->broadcast(s.sender, s.seq, kStateMessageBytes, s.at);
+  announced_to_ = until;
+  receptions_.clear();
+  session_->advance(until, receptions_);
+  for (const Reception& r : receptions_) {
+    if (r.sender >= sent_.size() || r.receiver >= sent_.size() || r.receiver == r.sender ||
+        r.seq >= announced_[r.sender])
+      throw std::runtime_error("the simulated radio reported a message nobody sent");
+    std::uint32_t index;
+    if (!free_pending_.empty()) {
+      index = free_pending_.back();
+      free_pending_.pop_back();
+      pending_[index] = r;
+    } else {
+      index = static_cast<std::uint32_t>(pending_.size());
+      pending_.push_back(r);
+    }
+    k.schedule_at(r.at, deliver_kind_, r.receiver, event_class::deliver, index);
+  }
+  return until;
+}
+
+void NetworkedView::receive_radio(std::uint32_t j, std::uint32_t index) {
+  const Reception r = pending_[index];
+  free_pending_.push_back(index);
+  // Sent before now (a frame takes time on the air), so its broadcast has run.
+  const std::deque<StateMessage>& history = sent_[r.sender];
+  if (history.empty() || r.seq < history.front().seq || r.seq > history.back().seq)
+    throw std::runtime_error("the simulated radio delivered a message covsim no longer holds");
+  const StateMessage& m = history[r.seq - history.front().seq];
+  ++totals_.delivered;
+  latency_.add((kernel_.now() - m.sent).seconds());
+  tables_[j].update(m);
 }
 
 void NetworkedView::start(SimTime t0) {
@@ -84,7 +141,9 @@ void NetworkedView::start(SimTime t0) {
           kernel_.stream(i, "broadcast-phase").uniform(0.0, period.seconds()));
     }
     kernel_.schedule_periodic(period, phase, broadcast_kind_, i, event_class::broadcast);
+    phases_.push_back(phase);
   }
+  announced_.assign(tables_.size(), 0);
 }
 
 bool NetworkedView::ready(std::uint32_t i) {
@@ -135,10 +194,12 @@ void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {
   const auto n = static_cast<std::uint32_t>(tables_.size());
   totals_.sent += n - 1;
   if (session_) {
+    // Announced to the radio ahead (advance_to): only its content is new.
+    if (m.seq >= announced_[i] || k.now() >= announced_to_)
+      throw std::logic_error("a broadcast the simulated radio was not told of");
     std::deque<StateMessage>& history = sent_[i];
     history.push_back(m);
     if (history.size() > kKeptMessages) history.pop_front();
-    session_->broadcast(i, m.seq, kStateMessageBytes);
     return;
   }
   const std::uint32_t slot = new_slot(m);

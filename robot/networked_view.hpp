@@ -11,9 +11,12 @@
 // somebody, or once acquire_deadline() has passed (it then goes alone, its cell Ω).
 //
 // With a simulated radio (network.channel, e.g. ns3_wifi) the channel is a session run
-// beside the kernel (KernelPeer): a broadcast is handed to it with its size, each motion
-// step moves the robot's radio, and each reception it reports becomes a "deliver" event at
-// its time. A message is kept until its sender has sent kKeptMessages newer ones.
+// beside the kernel (KernelPeer), which runs it ahead from one motion step to the next:
+// broadcasts are periodic, so each robot's broadcasts up to the next step are announced to it
+// with their times, numbers and sizes (their content is never needed by the radio), and the
+// step's moves follow at the step's time. Each reception it reports becomes a "deliver"
+// event at its time, which reads the message then. A message is kept until its sender has
+// sent kKeptMessages newer ones.
 #include <deque>
 #include <memory>
 #include <optional>
@@ -42,6 +45,7 @@ class NetworkedView final : public NeighborView, private KernelPeer {
   bool ready(std::uint32_t i) override;
   void refresh(std::uint32_t i) override;
   void moved(std::uint32_t i) override;
+  void motion_clock(SimTime first, SimTime period) override;
   Knowledge knowledge(std::uint32_t i, Generators kind) const override;
   NetworkTotals totals(bool radio = false) const override;
 
@@ -57,8 +61,11 @@ class NetworkedView final : public NeighborView, private KernelPeer {
   std::uint32_t new_slot(const StateMessage& m);
   // Robot j reads the message in `slot`.
   void receive(std::uint32_t j, std::uint32_t slot);
-  // The simulated radio's receptions up to t, as delivery events.
-  void advance_to(Kernel& k, SimTime t) override;
+  // Runs the simulated radio to the next motion step at or after t (not past `limit`),
+  // announcing the broadcasts before it; its receptions become delivery events.
+  SimTime advance_to(Kernel& k, SimTime t, SimTime limit) override;
+  // Robot j hears the radio's reception `index` (of pending_).
+  void receive_radio(std::uint32_t j, std::uint32_t index);
 
   // A sender's messages a simulated radio may still deliver: far more than its MAC queue
   // holds (ns-3's: 500 frames).
@@ -71,6 +78,12 @@ class NetworkedView final : public NeighborView, private KernelPeer {
   std::unique_ptr<ChannelSession> session_;     // a simulated radio; null: channel_ decides
   std::vector<std::deque<StateMessage>> sent_;  // per sender, with a session
   std::vector<Reception> receptions_;
+  std::vector<Reception> pending_;  // receptions scheduled, not yet read
+  std::vector<std::uint32_t> free_pending_;
+  std::vector<SimTime> phases_;           // each robot's first broadcast
+  std::vector<std::uint64_t> announced_;  // broadcasts announced to the radio, per robot
+  SimTime announced_to_;                  // every broadcast before it is announced
+  SimTime motion_first_, motion_period_;  // the loop-2 steps' clock; period 0: unknown
   LatencyStats latency_;
   std::optional<ReceiverGrid> receivers_;  // with a finite range only
   std::vector<std::uint32_t> candidates_;
