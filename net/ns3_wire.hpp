@@ -21,12 +21,14 @@
 //
 // The peer exits (status 0) when its input ends: covsim closes it at the end of a run.
 // step: the moves take place at the peer's current time (the until_ns of the previous step, 0
-// at first), in the order given; each send is then scheduled at its at_ns (not before the
-// current time; sends of one time in the order given); the peer then runs its simulator
-// through its events up to until_ns and answers with the receptions they made, in the order
-// they happened. An event the run schedules for exactly until_ns itself runs in the next step, so
-// a reception may carry the previous step's until_ns (never an earlier time). The config text is
-// "key value" lines (docs/ns3.md lists the keys).
+// at first), in the order given; then the previous step's sends at its until_ns, then this
+// step's sends, each at its at_ns (from the current time to until_ns; sends of one time in
+// the order given; those at until_ns are made at the start of the next step, after its
+// moves, as covsim moves its robots before they broadcast at one instant); the peer then
+// runs its simulator through its events up to until_ns and answers with the receptions they
+// made, in the order they happened. An event the run schedules for exactly until_ns itself runs in
+// the next step, so a reception may carry the previous step's until_ns (never an earlier time). The
+// config text is "key value" lines (docs/ns3.md lists the keys).
 #include <cstdint>
 #include <cstring>
 #include <limits>

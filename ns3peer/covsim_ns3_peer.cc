@@ -36,6 +36,7 @@ struct PeerState {
   std::vector<ns3::Ptr<ns3::NetDevice>> devices;
   std::vector<ns3::Ptr<ns3::MobilityModel>> mobility;
   std::vector<wire::Arrival> arrivals;  // since the last answer
+  std::vector<wire::Send> deferred;     // sends at the last step's end, made at the next
   wire::PeerStats stats;
 };
 PeerState peer;
@@ -233,6 +234,11 @@ void step(const std::string& payload) {
     if (robot >= peer.mobility.size()) fail("a move of an unknown robot");
     peer.mobility[robot]->SetPosition(ns3::Vector(x, y, 0.0));
   }
+  // Sends deferred from the last step's end come now, after this step's moves: covsim moves
+  // its robots before they broadcast at one instant.
+  for (const wire::Send& d : peer.deferred)
+    send(d.sender, d.seq, d.bytes);
+  peer.deferred.clear();
   const auto sends = r.get<std::uint32_t>();
   if (!r.ok() || r.left() != std::size_t{sends} * 24) fail("a malformed step frame");
   const ns3::Time now = ns3::Simulator::Now();
@@ -242,9 +248,11 @@ void step(const std::string& payload) {
     const auto bytes = r.get<std::uint32_t>();
     const auto at = r.get<std::int64_t>();
     if (sender >= peer.devices.size() || bytes > 2304) fail("a malformed send");
-    if (at < now.GetNanoSeconds()) fail("a send before the peer's time");
+    if (at < now.GetNanoSeconds() || at > until) fail("a send outside the step");
     if (at == now.GetNanoSeconds())
       send(sender, seq, bytes);
+    else if (at == until)
+      peer.deferred.push_back(wire::Send{sender, seq, bytes, at});
     else
       ns3::Simulator::Schedule(ns3::NanoSeconds(at) - now, &send, sender, seq, bytes);
   }

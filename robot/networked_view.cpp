@@ -76,7 +76,8 @@ SimTime NetworkedView::advance_to(Kernel& k, SimTime t, SimTime limit) {
     until = motion_first_;
   }
   until = std::max(t, std::min(until, limit));
-  // Every broadcast before `until`, by time and then robot (the kernel's order at one time).
+  // Every broadcast up to `until`, by time and then robot (the kernel's order at one time);
+  // the kernel dispatches the events at `until` itself before it asks again.
   struct Announced {
     SimTime at;
     std::uint32_t sender;
@@ -88,7 +89,7 @@ SimTime NetworkedView::advance_to(Kernel& k, SimTime t, SimTime limit) {
     for (;;) {
       const SimTime at =
           phases_[i] + SimTime::from_ns(static_cast<std::int64_t>(announced_[i]) * period);
-      if (at >= until) break;
+      if (at > until) break;
       sends.push_back({at, i, announced_[i]++});
     }
   }
@@ -195,7 +196,7 @@ void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {
   totals_.sent += n - 1;
   if (session_) {
     // Announced to the radio ahead (advance_to): only its content is new.
-    if (m.seq >= announced_[i] || k.now() >= announced_to_)
+    if (m.seq >= announced_[i] || k.now() > announced_to_)
       throw std::logic_error("a broadcast the simulated radio was not told of");
     std::deque<StateMessage>& history = sent_[i];
     history.push_back(m);

@@ -82,7 +82,7 @@ class NetworkedView final : public NeighborView, private KernelPeer {
   std::vector<std::uint32_t> free_pending_;
   std::vector<SimTime> phases_;           // each robot's first broadcast
   std::vector<std::uint64_t> announced_;  // broadcasts announced to the radio, per robot
-  SimTime announced_to_;                  // every broadcast before it is announced
+  SimTime announced_to_;                  // every broadcast up to it is announced
   SimTime motion_first_, motion_period_;  // the loop-2 steps' clock; period 0: unknown
   LatencyStats latency_;
   std::optional<ReceiverGrid> receivers_;  // with a finite range only

@@ -24,6 +24,12 @@ for key in phy_drops transmissions mac_drops latency_mean latency_p95; do
   [ "$(json a/final.json "['network']['$key']")" != None ] || fail "network.$key is null"
 done
 "$covsim" replay a.trace | grep -q "replay matches" || fail "the trace does not replay"
+# Broadcasts at the motion steps' instants (no random phase): announced to the radio with the
+# step, made after its moves; on 802.11 they all go at once and collide.
+"$covsim" run "$src/scenarios/u_shape.json" --set "$radio" --set network.random_phase=false \
+  --out sync >/dev/null || fail "synchronised broadcasts: the run failed"
+/usr/bin/python3 -c "assert $(json sync/final.json "['network']['delivery_ratio']") < 0.1" ||
+  fail "synchronised broadcasts did not collide: $(json sync/final.json "['network']")"
 
 # A sweep's runs, each with its own peer, are the same at any parallelism.
 cat > sweep.json <<JSON
