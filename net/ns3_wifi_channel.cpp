@@ -34,14 +34,20 @@ const std::vector<std::string>& modes_of(const std::string& standard) {
   return standard == "b" ? b : standard == "g" ? g : standard == "a" ? a : n;
 }
 
+// The rate of a scenario without one: the standard's lowest mandatory mode (for g the lowest
+// ERP-OFDM one, not the DSSS modes g also offers).
+std::string lowest_mode(const std::string& standard) {
+  return standard == "g" ? "ErpOfdmRate6Mbps" : modes_of(standard).front();
+}
+
 // Longest wait for one answer of the peer: a step of a busy channel with a hundred radios
 // takes well under a second.
 constexpr double kAnswerTimeout = 120.0;
 
 class Ns3WifiSession final : public ChannelSession {
  public:
-  Ns3WifiSession(const fs::path& program, const std::string& config)
-      : peer_(program, {}, kAnswerTimeout) {
+  Ns3WifiSession(const fs::path& program, const std::string& config, std::size_t radios)
+      : peer_(program, {}, kAnswerTimeout), radios_(static_cast<double>(radios)) {
     // Every frame sent, for `covsim-ns3-peer --replay FILE` (ns-3 alone with this traffic).
     if (const char* file = std::getenv("COVSIM_NS3_RECORD"); file != nullptr && *file != '\0') {
       record_.open(file, std::ios::binary | std::ios::trunc);
@@ -130,11 +136,9 @@ class Ns3WifiSession final : public ChannelSession {
     return out;
   }
 
-  void set_radios(std::size_t n) { radios_ = static_cast<double>(n); }
-
  private:
   void send(ns3wire::FrameType type, const std::string& payload) {
-    peer_.send(static_cast<std::uint32_t>(type), payload);
+    peer_.send(type, payload);
     if (record_.is_open()) {
       record_ << ns3wire::frame(type, payload);
       if (!record_)
@@ -154,7 +158,7 @@ class Ns3WifiSession final : public ChannelSession {
   std::uint32_t moves_ = 0, sends_ = 0;
   std::string move_bytes_, send_bytes_;
   SimTime last_;
-  double radios_ = 0;
+  double radios_;
 };
 
 class Ns3WifiChannel final : public ChannelModel {
@@ -176,10 +180,8 @@ class Ns3WifiChannel final : public ChannelModel {
                       "covsim-ns3-peer target, or set COVSIM_NS3_PEER",
                       fmt::join(names, " and ")));
     }
-    auto session =
-        std::make_unique<Ns3WifiSession>(*program, ns3_peer_config_text(config_, context));
-    session->set_radios(context.positions.size());
-    return session;
+    return std::make_unique<Ns3WifiSession>(*program, ns3_peer_config_text(config_, context),
+                                            context.positions.size());
   }
   std::vector<std::string> replaces() const override {
     return {"range", "line_of_sight", "loss", "delay"};
@@ -194,7 +196,7 @@ class Ns3WifiChannel final : public ChannelModel {
 std::string ns3_peer_config_text(const Ns3WifiConfig& c, const ChannelContext& context) {
   std::string out = fmt::format("robots {}\nrun {}\nstandard {}\n", context.positions.size(),
                                 context.seed, c.standard);
-  if (c.rate) out += fmt::format("rate {}\n", *c.rate);
+  out += fmt::format("rate {}\n", c.rate);
   // Shortest round-trip text for every number: the peer reads the doubles covsim holds.
   out += fmt::format("tx_power_dbm {}\npropagation {}\n", c.tx_power, c.propagation);
   out += fmt::format("exponent {}\nreference_loss_db {}\nreference_distance {}\nmax_range {}\n",
@@ -214,10 +216,6 @@ std::string ns3_peer_config_text(const Ns3WifiConfig& c, const ChannelContext& c
 
 std::vector<fs::path> ns3_peer_candidates() {
   std::vector<fs::path> out;
-  if (const char* env = std::getenv("COVSIM_NS3_PEER"); env != nullptr && *env != '\0') {
-    out.emplace_back(env);
-    return out;
-  }
 #ifdef COVSIM_NS3_PEER_BUILT
   // A program in the build tree uses the peer built beside it; any other (installed, or a
   // user's linking the installed library) the installed peer first.
@@ -233,9 +231,9 @@ std::vector<fs::path> ns3_peer_candidates() {
 }
 
 std::optional<fs::path> ns3_peer_program() {
-  const std::vector<fs::path> candidates = ns3_peer_candidates();
-  if (candidates.size() == 1) return candidates.front();  // $COVSIM_NS3_PEER, as given
-  for (const fs::path& p : candidates) {
+  if (const char* env = std::getenv("COVSIM_NS3_PEER"); env != nullptr && *env != '\0')
+    return fs::path(env);  // as given: a wrong one is the run's error, naming it
+  for (const fs::path& p : ns3_peer_candidates()) {
     std::error_code ec;
     if (fs::exists(p, ec)) return p;
   }
@@ -294,13 +292,11 @@ ChannelEntry ns3_wifi_channel_entry() {
   e.make = [](const Params& p) -> std::shared_ptr<const ChannelModel> {
     Ns3WifiConfig c;
     c.standard = p.text("standard");
-    if (p.has("rate")) {
-      c.rate = p.text("rate");
-      const auto& modes = modes_of(c.standard);
-      if (std::find(modes.begin(), modes.end(), *c.rate) == modes.end())
-        throw ParamError("rate", fmt::format("802.11{} has no mode \"{}\" (expected one of {})",
-                                             c.standard, *c.rate, fmt::join(modes, ", ")));
-    }
+    c.rate = p.has("rate") ? p.text("rate") : lowest_mode(c.standard);
+    const auto& modes = modes_of(c.standard);
+    if (std::find(modes.begin(), modes.end(), c.rate) == modes.end())
+      throw ParamError("rate", fmt::format("802.11{} has no mode \"{}\" (expected one of {})",
+                                           c.standard, c.rate, fmt::join(modes, ", ")));
     c.tx_power = p.number("tx_power");
     c.propagation = p.text("propagation");
     c.exponent = p.number("exponent");

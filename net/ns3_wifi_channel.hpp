@@ -17,8 +17,8 @@ namespace covsim {
 
 struct Ns3WifiConfig {
   std::string standard = "b";
-  std::optional<std::string> rate;  // an ns-3 WifiMode name; unset: the standard's lowest
-  double tx_power = 16.0206;        // dBm, ns-3's default
+  std::string rate;           // an ns-3 WifiMode name (the scenario's, or the standard's lowest)
+  double tx_power = 16.0206;  // dBm, ns-3's default
   std::string propagation = "log_distance";
   double exponent = 3.0, reference_loss = 46.6777, reference_distance = 1.0;
   double max_range = 250.0;
@@ -30,11 +30,11 @@ struct Ns3WifiConfig {
 // The "key value" lines of the hello frame (net/ns3_wire.hpp) for a run.
 std::string ns3_peer_config_text(const Ns3WifiConfig& config, const ChannelContext& context);
 
-// Where the peer program may be, in order: $COVSIM_NS3_PEER alone if set; else, for a program
-// running from the build tree, the peer built there and then the installed one, and for any
-// other the installed one first. Empty when covsim was built without ns-3.
+// Where covsim looks for the peer program, in order: for a program running from the build
+// tree, the peer built there and then the installed one; for any other, the installed one
+// first. Empty when covsim was built without ns-3.
 std::vector<std::filesystem::path> ns3_peer_candidates();
-// The first candidate that exists ($COVSIM_NS3_PEER as given); nullopt if none does.
+// $COVSIM_NS3_PEER as given if set, else the first candidate that exists; nullopt if none.
 std::optional<std::filesystem::path> ns3_peer_program();
 
 ChannelEntry ns3_wifi_channel_entry();

@@ -84,9 +84,8 @@ void PeerProcess::died(const std::string& what) {
   throw PeerError(name_ + ": " + what);
 }
 
-void PeerProcess::send(std::uint32_t type, const std::string& payload) {
-  const std::string bytes =
-      ns3wire::frame(static_cast<ns3wire::FrameType>(type), payload);  // header + payload
+void PeerProcess::send(ns3wire::FrameType type, const std::string& payload) {
+  const std::string bytes = ns3wire::frame(type, payload);  // header + payload
   const char* p = bytes.data();
   std::size_t left = bytes.size();
   while (left > 0) {

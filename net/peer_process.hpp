@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "net/ns3_wire.hpp"
+
 namespace covsim {
 
 class PeerError : public std::runtime_error {
@@ -30,7 +32,7 @@ class PeerProcess {
   PeerProcess& operator=(const PeerProcess&) = delete;
   ~PeerProcess();
 
-  void send(std::uint32_t type, const std::string& payload);
+  void send(ns3wire::FrameType type, const std::string& payload);
   // The next frame; its type and payload.
   std::uint32_t receive(std::string& payload);
   const std::string& name() const { return name_; }

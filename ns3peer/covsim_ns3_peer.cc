@@ -125,13 +125,6 @@ ns3::WifiStandard standard_of(const std::string& name) {
   fail("unknown 802.11 standard '" + name + "' (expected b, g, a or n)");
 }
 
-std::string default_rate(const std::string& standard) {
-  if (standard == "b") return "DsssRate1Mbps";
-  if (standard == "g") return "ErpOfdmRate6Mbps";
-  if (standard == "n") return "HtMcs0";
-  return "OfdmRate6Mbps";
-}
-
 void build(const PeerConfig& c) {
   ns3::RngSeedManager::SetSeed(1);
   ns3::RngSeedManager::SetRun(c.run);
@@ -181,7 +174,8 @@ void build(const PeerConfig& c) {
   phy.Set("TxPowerEnd", ns3::DoubleValue(c.tx_power_dbm));
   ns3::WifiHelper wifi;
   wifi.SetStandard(standard_of(c.standard));
-  const std::string rate = c.rate.empty() ? default_rate(c.standard) : c.rate;
+  if (c.rate.empty()) fail("the config names no rate");
+  const std::string& rate = c.rate;
   // Broadcasts are not acknowledged, so no rate manager can adapt them: they go at one mode.
   wifi.SetRemoteStationManager("ns3::ConstantRateWifiManager", "DataMode", ns3::StringValue(rate),
                                "ControlMode", ns3::StringValue(rate), "NonUnicastMode",

@@ -15,7 +15,7 @@ struct PeerConfig {
   std::uint32_t robots = 0;
   std::uint64_t run = 1;                     // ns-3's RngRun: the covsim run's seed
   std::string standard = "b";                // 802.11 b, g, a or n
-  std::string rate;                          // an ns-3 WifiMode name; empty: the standard's lowest
+  std::string rate;                          // an ns-3 WifiMode name (covsim always gives one)
   double tx_power_dbm = 16.0206;             // ns-3's default
   std::string propagation = "log_distance";  // log_distance, friis or range
   double exponent = 3.0, reference_loss_db = 46.6777, reference_distance = 1.0;

@@ -94,44 +94,38 @@ std::shared_ptr<const Density> read_density(const JsonValue& v,
   return d;
 }
 
+// The object a network section's component makes from its parameters (a loss, delay or
+// channel model), and the type chosen.
+template <class Entry>
+auto make_network_component(const JsonValue& section, std::string& type) {
+  const auto& row = component_section<Entry>();
+  const ComponentChoice choice = read_component(section, row);
+  type = choice.type;
+  try {
+    return row.registry().at(choice.type).make(choice.params);
+  } catch (const ParamError& e) {
+    fail_param(section, e);
+  }
+}
+
 // The components a coverage run selects, each from its section of the table.
 void read_components(const JsonValue& root, CoverageConfig& c) {
   // null: the ideal network, as if absent (so that a sweep can vary it against others).
   if (auto n = root.find("network"); n && !n->is_null()) {
-    if (auto loss = n->find("loss")) {
-      const auto& row = component_section<LossEntry>();
-      const ComponentChoice choice = read_component(*loss, row);
-      try {
-        c.network.channel.loss = row.registry().at(choice.type).make(choice.params);
-      } catch (const ParamError& e) {
-        fail_param(*loss, e);
-      }
-    }
-    if (auto delay = n->find("delay")) {
-      const auto& row = component_section<DelayEntry>();
-      const ComponentChoice choice = read_component(*delay, row);
-      try {
-        c.network.channel.delay = row.registry().at(choice.type).make(choice.params);
-      } catch (const ParamError& e) {
-        fail_param(*delay, e);
-      }
-    }
+    std::string type;
+    if (auto loss = n->find("loss"))
+      c.network.channel.loss = make_network_component<LossEntry>(*loss, type);
+    if (auto delay = n->find("delay"))
+      c.network.channel.delay = make_network_component<DelayEntry>(*delay, type);
     if (auto channel = n->find("channel")) {
-      const auto& row = component_section<ChannelEntry>();
-      const ComponentChoice choice = read_component(*channel, row);
-      try {
-        c.network.channel.model = row.registry().at(choice.type).make(choice.params);
-      } catch (const ParamError& e) {
-        fail_param(*channel, e);
-      }
+      c.network.channel.model = make_network_component<ChannelEntry>(*channel, type);
       // A simulated radio decides reach, loss and delay itself: the abstract channel's keys
       // beside it would be silently ignored.
       if (const auto& model = c.network.channel.model) {
         for (const std::string& key : model->replaces()) {
           // null, or false for line_of_sight, states the abstract channel's default: allowed.
           if (auto v = n->find(key); v && !v->is_null() && v->raw() != false)
-            v->fail(fmt::format("does not apply to the {} channel, which decides it itself",
-                                choice.type));
+            v->fail(fmt::format("does not apply to the {} channel, which decides it itself", type));
         }
       }
     }

@@ -44,9 +44,7 @@ void write_result(const fs::path& dir, const SweepResult& r) {
 }
 
 std::optional<SweepResult> read_result(const fs::path& dir, std::size_t index) {
-  std::error_code ec;
-  if (!fs::exists(result_file(dir, index), ec)) return std::nullopt;
-  try {
+  try {  // a missing, unreadable or damaged result is run again
     // A result is a line of JSON: a file a megabyte long is not one covsim wrote.
     const nlohmann::json j =
         nlohmann::json::parse(read_whole_file(result_file(dir, index), 1 << 20));
