@@ -100,6 +100,10 @@ void add_planner_contract_command(CLI::App& app) {
   cmd->add_option("--step", o->setup.step, "Step length [m]")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  cmd->add_option("--radius", o->setup.radius,
+                  "Robot radius [m]: the planner works in the course shrunk by it (courses only)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd->add_option("--resolution", o->setup.resolution, "grid_astar cell side [m]")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--incomplete", o->incomplete,
@@ -134,6 +138,8 @@ void add_planner_contract_command(CLI::App& app) {
     }
     o->setup.range = parse_range(o->range);
     o->setup.family = o->family == "combs" ? CaseFamily::combs : CaseFamily::courses;
+    if (o->setup.radius > 0.0 && o->setup.family == CaseFamily::combs)
+      throw InputError("planner-contract: --radius: applies to --family courses, not combs");
     if (o->incomplete) o->setup.complete = false;
     if (!o->ranges.empty()) {
       std::vector<double> ranges;

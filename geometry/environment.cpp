@@ -213,6 +213,11 @@ Vec2 Environment::closest_point(Vec2 p) const {
   return project_to_segment(p, boundary_[*e].a, boundary_[*e].b).point;
 }
 
+double Environment::boundary_distance(Vec2 p) const {
+  const auto e = nearest_edge(p, nullptr);
+  return distance(p, project_to_segment(p, boundary_[*e].a, boundary_[*e].b).point);
+}
+
 Vec2 Environment::closest_point(Vec2 p, std::uint32_t component) const {
   if (component_of(p) == component) return p;
   const auto e = nearest_edge(p, &component);

@@ -70,6 +70,8 @@ class Environment {
   // the closest point of that component.
   Vec2 closest_point(Vec2 p) const;
   Vec2 closest_point(Vec2 p, std::uint32_t component) const;
+  // The distance from p to the nearest point of ∂Ω, inside Ω or out.
+  double boundary_distance(Vec2 p) const;
   // How far a straight motion from `from` (in Ω) toward `to` gets before it would leave Ω:
   // `to` if the segment lies in Ω, else the point where it first leaves.
   Vec2 advance(Vec2 from, Vec2 to) const;

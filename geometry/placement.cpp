@@ -118,7 +118,8 @@ Vec2 uniform_point_by_rejection(const Environment& env, RandomStream& rng) {
 
 std::vector<Vec2> place_points(const Environment& env, const Placement& placement,
                                std::size_t count, double separation, RandomStream& rng,
-                               const std::vector<Vec2>& taken) {
+                               const std::vector<Vec2>& taken,
+                               const std::function<bool(Vec2)>& admits) {
   Box box;
   if (placement.kind == Placement::Kind::region) {
     for (Vec2 v : placement.region)
@@ -141,7 +142,7 @@ std::vector<Vec2> place_points(const Environment& env, const Placement& placemen
             i, count, kTries, separation));
       }
       const auto q = candidate(env, area, placement, box, rng);
-      if (!q || !set.fits(*q)) continue;
+      if (!q || !set.fits(*q) || (admits && !admits(*q))) continue;
       set.add(*q);
       out.push_back(*q);
       break;

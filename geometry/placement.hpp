@@ -3,6 +3,7 @@
 // Ω, uniformly over a region (a polygon ∩ Ω), or uniformly over a cluster (a disk ∩ Ω, the
 // paper's "all start in one corner"), each at least `separation` from every other point.
 #include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -26,11 +27,13 @@ class PlacementError : public std::runtime_error {
 };
 
 // `count` points drawn from `rng` by the placement, each at least `separation` from the
-// others and from `taken`; dart throwing, so the result depends on the stream alone. Throws
-// PlacementError after 1000 tries per point without finding room.
+// others and from `taken`, and each that `admits` (if given: room for a robot's body);
+// dart throwing, so the result depends on the stream alone. Throws PlacementError after 1000
+// tries per point without finding room.
 std::vector<Vec2> place_points(const Environment& env, const Placement& placement,
                                std::size_t count, double separation, RandomStream& rng,
-                               const std::vector<Vec2>& taken = {});
+                               const std::vector<Vec2>& taken = {},
+                               const std::function<bool(Vec2)>& admits = {});
 
 // A point of Ω drawn uniformly (over the free-space triangles, by area).
 Vec2 uniform_point(const Environment& env, RandomStream& rng);

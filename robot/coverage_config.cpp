@@ -55,10 +55,19 @@ Key tolerance_key(const char* name, std::optional<double> CoverageConfig::*membe
 ConfigKeys<CoverageConfig> motion_keys() {
   const CoverageConfig d;
   return {member_key<CoverageConfig>(
-      ParamSpec::number("max_speed", "m/s", "robots and virtual generators move at most this fast")
-          .positive()
-          .defaults_to(d.max_speed),
-      &CoverageConfig::max_speed)};
+              ParamSpec::number("max_speed", "m/s",
+                                "robots and virtual generators move at most this fast")
+                  .positive()
+                  .defaults_to(d.max_speed),
+              &CoverageConfig::max_speed),
+          member_key<CoverageConfig>(
+              ParamSpec::number("radius", "m",
+                                "robots are disks of this radius: they plan, sense and move in Ω "
+                                "shrunk by it (corners mitered), their targets projected onto "
+                                "it, while cells and costs stay on Ω; 0: points")
+                  .non_negative()
+                  .defaults_to(d.radius),
+              &CoverageConfig::radius)};
 }
 
 ConfigKeys<CoverageConfig> projection_keys() {

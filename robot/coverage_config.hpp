@@ -70,6 +70,8 @@ struct CoverageConfig {
   SimTime loop2_period = SimTime::from_ns(100'000'000);    // 0.1 s: one motion step
   SimTime loop1_period = SimTime::from_ns(1'000'000'000);  // periodic mode only
   double max_speed = 0.1;                                  // m/s
+  // Robots are disks of this radius (0: points): they plan and move in Ω ⊖ radius.
+  double radius = 0.0;  // m
   SensorConfig sensor;
   PlannerConfig planner;
   // Convergence: every robot settled at its real target (within position_tolerance) and

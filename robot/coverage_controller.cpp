@@ -23,16 +23,34 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   tol_ = Tolerances{config_.position_tolerance_in(env.diameter(), spacing),
                     config_.virtual_tolerance_in(env.diameter(), spacing)};
   step_ = config_.max_speed * config_.loop2_period.seconds();
-  const PlannerSource source =
-      make_planner ? PlannerSource{}
-                   : planner_source(config_.planner,
-                                    PlannerContext{env, SensorSpec{config_.sensor.noise_sigma}});
+  space_ = std::make_unique<ConfigurationSpace>(env, config_.radius);
+  // Each part of the free space has its planners' shared maps, built for the first robot in it.
+  std::vector<std::optional<PlannerSource>> sources(space_->part_count());
   for (std::uint32_t i = 0; i < starts.size(); ++i) {
+    std::size_t part = 0;
+    if (config_.radius > 0.0) {
+      const auto k = space_->part_of(starts[i]);
+      if (!k)
+        throw std::invalid_argument(fmt::format(
+            "robot {} at ({}, {}): its body (radius {} m) overlaps an obstacle or leaves the "
+            "environment",
+            i, starts[i].x, starts[i].y, config_.radius));
+      part = *k;
+    }
+    part_.push_back(part);
     Robot r;
     r.id = i;
     r.position = r.virtual_generator = r.virtual_target = r.real_target = r.goal = r.assigned =
         starts[i];
-    r.planner = make_planner ? make_planner(i) : source();
+    if (make_planner) {
+      r.planner = make_planner(i);
+    } else {
+      if (!sources[part])
+        sources[part] = planner_source(
+            config_.planner,
+            PlannerContext{space_->part(part), SensorSpec{config_.sensor.noise_sigma}});
+      r.planner = (*sources[part])();
+    }
     robots_.push_back(std::move(r));
   }
   state_ = std::make_unique<GeneratorState>(integrator_, starts);
@@ -42,8 +60,9 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   } else {
     view_ = std::make_unique<NetworkedView>(kernel_, env, config_.network, *state_);
   }
-  sensor_ = std::make_unique<SensorModel>(kernel_, env, config_.sensor, robots_.size(),
-                                          [this](std::uint32_t i) { return robots_[i].position; });
+  sensor_ = std::make_unique<SensorModel>(
+      kernel_, [this](std::uint32_t i) -> const Environment& { return free_space(i); },
+      config_.sensor, robots_.size(), [this](std::uint32_t i) { return robots_[i].position; });
   loop1_kind_ = kernel_.add_kind("loop1", [this](Kernel&, const Event& ev) { loop1(ev.entity); });
   loop2_kind_ =
       kernel_.add_kind("loop2", [this](Kernel& k, const Event& ev) { loop2(k, ev.entity); });
@@ -104,9 +123,11 @@ void CoverageController::loop1(std::uint32_t i) {
       throw std::invalid_argument(fmt::format("a target must be finite, found ({}, {})", t.x, t.y));
     return t;
   });
-  // Algorithm 2, lines 2-4: an obstacle boundary Voronoi region projects its target.
-  r.projected = !env_.contains(r.virtual_target);
-  r.real_target = r.projected ? env_.closest_point(r.virtual_target) : r.virtual_target;
+  // Algorithm 2, lines 2-4: an obstacle boundary Voronoi region projects its target, onto
+  // the free space of the robot's body.
+  const Environment& space = free_space(i);
+  r.projected = !space.contains(r.virtual_target);
+  r.real_target = r.projected ? space.closest_point(r.virtual_target) : r.virtual_target;
   // At its real target: for a projected target, at a closest point of Ω to the virtual one
   // (when several are equally close, the planner's is as good as the controller's), or
   // settled at a closest point of Ω to the goal it was given, which the target has not left
@@ -119,14 +140,14 @@ void CoverageController::loop1(std::uint32_t i) {
   // projection of a target that had moved 0.15 m, and never handed it).
   const auto at_closest_point = [&](Vec2 goal, Vec2 closest) {
     return distance(r.position, closest) <= tol_.position ||
-           distance(r.position, goal) - distance(closest, goal) <= env_.tolerance();
+           distance(r.position, goal) - distance(closest, goal) <= space.tolerance();
   };
   const bool at_target =
       r.projected ? at_closest_point(r.virtual_target, r.real_target) ||
                         ((r.status == PlanStatus::projected || r.status == PlanStatus::reached) &&
                          distance(r.virtual_target, r.assigned) <= tol_.position &&
-                         !env_.contains(r.assigned) &&
-                         at_closest_point(r.assigned, env_.closest_point(r.assigned)))
+                         !space.contains(r.assigned) &&
+                         at_closest_point(r.assigned, space.closest_point(r.assigned)))
                   : distance(r.real_target, r.position) <= tol_.position;
   r.stable = is_settled(r.status) && at_target &&
              guarded(i, "coverage law", config_.law.type, [&] { return law_->at_rest(r, tol_); });
@@ -156,16 +177,16 @@ Vec2 CoverageController::planner_goal(const Robot& r) const {
   return config_.projection == ProjectionPolicy::known ? r.real_target : r.virtual_target;
 }
 
-double CoverageController::excursion(Vec2 p, Vec2 q) const {
+double CoverageController::excursion(const Environment& space, Vec2 p, Vec2 q) const {
   // The stretch outside Ω runs from where the motion leaves to where it comes back; the
   // largest distance from Ω of its points, finely sampled, is the excursion.
-  const Vec2 out = env_.advance(p, q);
-  const Vec2 back = env_.advance(q, p);
+  const Vec2 out = space.advance(p, q);
+  const Vec2 back = space.advance(q, p);
   constexpr int kSamples = 32;
   double depth = 0.0;
   for (int k = 0; k <= kSamples; ++k) {
     const Vec2 x = out + (static_cast<double>(k) / kSamples) * (back - out);
-    depth = std::max(depth, distance(x, env_.closest_point(x)));
+    depth = std::max(depth, distance(x, space.closest_point(x)));
   }
   return depth;
 }
@@ -193,19 +214,21 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
           "robot {}'s planner {} proposed a step of {} m at t={} s; the step length is {} m", i,
           r.planner->name(), distance(r.position, s.next), k.now().seconds(), step_));
     }
-    // Most steps stay in Ω whole: the segment is then checked once, not again below.
-    const bool whole = env_.segment_inside(r.position, s.next);
-    Vec2 next = whole ? s.next : env_.advance(r.position, s.next);
+    // Most steps stay in Ω whole: the segment is then checked once, not again below. A body
+    // moves in Ω shrunk by its radius: it stops where it would touch a wall.
+    const Environment& space = free_space(i);
+    const bool whole = space.segment_inside(r.position, s.next);
+    Vec2 next = whole ? s.next : space.advance(r.position, s.next);
     // Out of Ω: a motion that ends in an obstacle, or cuts through one deeper than the
     // position tolerance, ends the run with the robot where it crossed ∂Ω. A corner cut
     // within the tolerance (by a micrometre) on the way to a point of Ω is a graze.
     bool departed = false;
     if (!r.planner->avoids_obstacles() && !(next == s.next)) {
-      departed = !env_.contains(s.next) || excursion(r.position, s.next) > tol_.position;
+      departed = !space.contains(s.next) || excursion(space, r.position, s.next) > tol_.position;
       if (!departed) next = s.next;
     }
     if (r.planner->avoids_obstacles() && !(whole && next == s.next) &&
-        !env_.segment_inside(r.position, next)) {
+        !space.segment_inside(r.position, next)) {
       throw std::logic_error(
           fmt::format("robot {} left the environment at t={} s: ({}, {}) -> ({}, {})", i,
                       k.now().seconds(), r.position.x, r.position.y, next.x, next.y));
@@ -224,7 +247,8 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     }
     r.status = s.status;
     r.stable = false;
-    if (s.status == PlanStatus::projected && env_.contains(r.goal)) {
+    if (config_.radius > 0.0 && space_->overlaps_boundary(next)) ++wall_contacts_;
+    if (s.status == PlanStatus::projected && space.contains(r.goal)) {
       failure_ = PlannerFailure{i, k.now(), r.goal, r.position};
       k.stop();
       return;
@@ -256,7 +280,37 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
   if (observer_ != nullptr) observer_->on_motion(k.now(), r);
 }
 
+void CoverageController::check_bodies() {
+  // A sweep along x: only pairs nearer in x than both the least gap so far and a contact
+  // need a distance.
+  const double r2 = 2.0 * config_.radius;
+  const double touch = r2 - env_.tolerance();
+  std::vector<std::uint32_t> order(robots_.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return robots_[a].position.x < robots_[b].position.x ||
+           (robots_[a].position.x == robots_[b].position.x && a < b);
+  });
+  std::vector<bool> touching(robots_.size(), false);
+  double least = INFINITY;
+  for (std::size_t a = 0; a < order.size(); ++a) {
+    const Vec2 p = robots_[order[a]].position;
+    for (std::size_t b = a + 1; b < order.size(); ++b) {
+      const Vec2 q = robots_[order[b]].position;
+      if (q.x - p.x >= std::max(least, r2)) break;
+      const double d = distance(p, q);
+      least = std::min(least, d);
+      if (d < touch) touching[order[a]] = touching[order[b]] = true;
+    }
+  }
+  if (order.size() >= 2) body_gap_min_ = std::fmin(body_gap_min_, least - r2);
+  for (bool t : touching)
+    if (t) contact_time_ += config_.loop2_period.seconds();
+}
+
 void CoverageController::check(Kernel& k) {
+  if (config_.radius > 0.0) check_bodies();
   for (const Robot& r : robots_) {
     k.fingerprint().fold_state(r.position.x);
     k.fingerprint().fold_state(r.position.y);

@@ -31,6 +31,7 @@
 // (ending in one, or cutting through one deeper than the position tolerance) stops the run
 // where it crosses ∂Ω (left_environment()). A
 // motion that still leaves Ω is an internal error: it throws.
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -38,6 +39,7 @@
 #include <vector>
 
 #include "core/kernel.hpp"
+#include "geometry/configuration_space.hpp"
 #include "robot/coverage_config.hpp"
 #include "robot/generator_state.hpp"
 #include "robot/neighbor_view.hpp"
@@ -92,6 +94,16 @@ class CoverageController {
   const std::vector<Robot>& robots() const { return robots_; }
   const CoverageConfig& config() const { return config_; }
   const Environment& environment() const { return env_; }
+  // Where robot centres may go (Ω ⊖ radius), and the part of it robot i plans, senses and
+  // moves in.
+  const ConfigurationSpace& configuration_space() const { return *space_; }
+  const Environment& free_space(std::uint32_t i) const { return space_->part(part_[i]); }
+  // With bodies (radius > 0): the least distance between two robots' bodies over the run's
+  // motion steps (negative: they overlapped; NaN for points), robot-seconds spent with a
+  // body overlapping another, and motion steps that ended with a body overlapping a wall.
+  double body_gap_min() const { return body_gap_min_; }
+  double contact_time() const { return contact_time_; }
+  std::uint64_t wall_contacts() const { return wall_contacts_; }
   const CellIntegrator& integrator() const { return integrator_; }
   const CoverageLaw& law() const { return *law_; }
   CoverageLaw& law() { return *law_; }
@@ -123,13 +135,19 @@ class CoverageController {
   // The goal loop 1 hands robot r's planner under the projection policy.
   Vec2 planner_goal(const Robot& r) const;
   // How deep a straight motion between p and q, both in Ω, runs outside Ω (0 if it stays in).
-  double excursion(Vec2 p, Vec2 q) const;
+  double excursion(const Environment& space, Vec2 p, Vec2 q) const;
   void set_goal(Robot& r, Vec2 goal);
   void loop2(Kernel& k, std::uint32_t i);
   void check(Kernel& k);
+  // Body distances and contacts at a motion step (radius > 0).
+  void check_bodies();
 
   Kernel& kernel_;
   const Environment& env_;
+  std::unique_ptr<ConfigurationSpace> space_;
+  std::vector<std::size_t> part_;  // robot i's part of space_
+  double body_gap_min_ = NAN, contact_time_ = 0.0;
+  std::uint64_t wall_contacts_ = 0;
   CellIntegrator integrator_;
   CoverageConfig config_;
   Tolerances tol_;

@@ -4,9 +4,10 @@
 
 namespace covsim {
 
-SensorModel::SensorModel(Kernel& kernel, const Environment& env, SensorConfig config,
-                         std::size_t robots, const std::function<Vec2(std::uint32_t)>& position)
-    : kernel_(kernel), env_(env), config_(config), position_(position) {
+SensorModel::SensorModel(Kernel& kernel, std::function<const Environment&(std::uint32_t)> space,
+                         SensorConfig config, std::size_t robots,
+                         const std::function<Vec2(std::uint32_t)>& position)
+    : kernel_(kernel), space_(std::move(space)), config_(config), position_(position) {
   if (config_.exact()) return;
   for (std::uint32_t i = 0; i < robots; ++i) {
     noise_rng_.push_back(kernel_.stream(i, "sensor-noise"));
@@ -33,20 +34,21 @@ void SensorModel::take_reading(std::uint32_t i, Vec2 position) {
   // A lost reading leaves the planner with the last one (the first is never lost).
   if (config_.dropout > 0.0 && has_reading_[i] && dropout_rng_[i].bernoulli(config_.dropout))
     return;
-  last_[i] = sense(env_, position, config_.range);
+  const Environment& env = space_(i);
+  last_[i] = sense(env, position, config_.range);
   if (config_.noise_sigma > 0.0)
-    add_range_noise(last_[i], noise_rng_[i], config_.noise_sigma, env_.tolerance());
+    add_range_noise(last_[i], noise_rng_[i], config_.noise_sigma, env.tolerance());
   has_reading_[i] = true;
 }
 
 SensorReading SensorModel::reading(std::uint32_t i, Vec2 position) {
-  if (config_.exact()) return sense(env_, position, config_.range);
+  if (config_.exact()) return sense(space_(i), position, config_.range);
   // The latest range reading (taken at its origin), with the robot's own position and its
   // current contacts.
   if (!config_.period) take_reading(i, position);
   SensorReading now = last_[i];
   now.position = position;
-  now.contacts = contacts_at(env_, position);
+  now.contacts = contacts_at(space_(i), position);
   return now;
 }
 

@@ -22,8 +22,17 @@ struct SensorConfig {
 
 class SensorModel {
  public:
-  SensorModel(Kernel& kernel, const Environment& env, SensorConfig config, std::size_t robots,
+  // space(i): where robot i senses, Ω or its part of Ω shrunk by its radius (what its range
+  // sensor measures, grown by its own body).
+  SensorModel(Kernel& kernel, std::function<const Environment&(std::uint32_t)> space,
+              SensorConfig config, std::size_t robots,
               const std::function<Vec2(std::uint32_t)>& position);
+  // Every robot senses Ω.
+  SensorModel(Kernel& kernel, const Environment& env, SensorConfig config, std::size_t robots,
+              const std::function<Vec2(std::uint32_t)>& position)
+      : SensorModel(
+            kernel, [&env](std::uint32_t) -> const Environment& { return env; }, config, robots,
+            position) {}
   // Schedules the periodic readings, if any.
   void start(SimTime t0);
   // What robot i's planner gets at a loop-2 step, the robot standing at `position`.
@@ -33,7 +42,7 @@ class SensorModel {
   void take_reading(std::uint32_t i, Vec2 position);
 
   Kernel& kernel_;
-  const Environment& env_;
+  std::function<const Environment&(std::uint32_t)> space_;
   SensorConfig config_;
   std::function<Vec2(std::uint32_t)> position_;
   EventKind sense_kind_ = 0;

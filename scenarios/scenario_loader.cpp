@@ -6,6 +6,7 @@
 
 #include "core/random_stream.hpp"
 #include "geometry/cell_integrator.hpp"
+#include "geometry/configuration_space.hpp"
 #include "geometry/geometry_error.hpp"
 #include "geometry/placement.hpp"
 #include "geometry/ring_validation.hpp"
@@ -164,7 +165,9 @@ void read_fixed_sections(const JsonValue& root, Scenario& s) {
 }
 
 void check_distinct(const JsonValue& list, const std::vector<Vec2>& positions,
-                    const Environment& env) {
+                    const ConfigurationSpace& space) {
+  const Environment& env = space.environment();
+  const double r = space.radius();
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const Vec2 p = positions[i];
     if (!env.contains(p))
@@ -172,9 +175,17 @@ void check_distinct(const JsonValue& list, const std::vector<Vec2>& positions,
           fmt::format("robot at ({}, {}) is not in the environment (outside it or "
                       "inside an obstacle)",
                       p.x, p.y));
+    if (r > 0.0 && !space.part_of(p))
+      list[i].fail(fmt::format(
+          "robot at ({}, {}) is {:.6g} m from a wall: its body (robots.radius {} m) overlaps it",
+          p.x, p.y, env.boundary_distance(p), r));
     for (std::size_t j = 0; j < i; ++j) {
       if (positions[j] == p)
         list[i].fail(fmt::format("robots {} and {} start at the same position", j, i));
+      if (r > 0.0 && distance(positions[j], p) < 2.0 * r - env.tolerance())
+        list[i].fail(fmt::format(
+            "robots {} and {} start {:.6g} m apart: their bodies (robots.radius {} m) overlap", j,
+            i, distance(positions[j], p), r));
     }
   }
 }
@@ -220,8 +231,14 @@ double start_area(const Placement& p, const Environment& env) {
 
 // "robots": given positions (perturbed by "jitter" per seed), or "count" robots drawn per seed
 // by "start". Draws come from the seed's "robot-start" stream.
-std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
+std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env, double radius,
                               std::optional<std::uint64_t> seed, const RobotDraw& draw) {
+  std::optional<ConfigurationSpace> space;
+  try {
+    space.emplace(env, radius);
+  } catch (const GeometryError& e) {
+    v.fail(e.what());
+  }
   const auto positions = v.find("positions");
   const auto count = v.find("count");
   if (positions && count) v.fail("expected \"positions\" or \"count\", not both");
@@ -237,7 +254,7 @@ std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
     if (auto s = v.find("start")) s->fail("\"start\" goes with \"count\", not \"positions\"");
     out = positions->points();
     if (out.empty()) positions->fail("expected at least one robot");
-    check_distinct(*positions, out, env);
+    check_distinct(*positions, out, *space);
     if (auto j = v.find("jitter")) {
       const double sigma = draw.jitter;
       if (auto s = v.find("separation")) s->fail("\"separation\" goes with \"count\"");
@@ -252,9 +269,9 @@ std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
               (*positions)[i].fail(fmt::format(
                   "no jittered position in Ω found in 1000 tries (jitter {} m)", sigma));
             const Vec2 q = given + Vec2{rng.normal(0.0, sigma), rng.normal(0.0, sigma)};
-            bool free = env.contains(q);
+            bool free = radius > 0.0 ? space->part_of(q).has_value() : env.contains(q);
             for (std::size_t k = 0; free && k < out.size(); ++k)
-              free = k == i || !(out[k] == q);
+              free = k == i || (!(out[k] == q) && distance(out[k], q) >= 2.0 * radius);
             if (free) {
               out[i] = q;
               break;
@@ -272,11 +289,15 @@ std::vector<Vec2> read_robots(const JsonValue& v, const Environment& env,
   if (n == 0 || n > 100000) count->fail(fmt::format("expected 1 to 100000 robots, found {}", n));
   const JsonValue start = v.at("start");
   const Placement placement = read_start(start);
-  const double separation = draw.separation.value_or(
-      0.05 * std::sqrt(start_area(placement, env) / static_cast<double>(n)));
+  // Bodies may touch but not overlap.
+  const double separation =
+      std::max(2.0 * radius, draw.separation.value_or(0.05 * std::sqrt(start_area(placement, env) /
+                                                                       static_cast<double>(n))));
   RandomStream rng = stream(start);
+  const auto body_fits = [&](Vec2 q) { return space->part_of(q).has_value(); };
   try {
-    out = place_points(env, placement, n, separation, rng);
+    out = place_points(env, placement, n, separation, rng, {},
+                       radius > 0.0 ? std::function<bool(Vec2)>(body_fits) : nullptr);
   } catch (const PlacementError& e) {
     start.fail(e.what());
   }
@@ -338,7 +359,7 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   s.density = read_density(root.at("density"), base_dir, *s.environment, s.seed);
   read_fixed_sections(root, s);
   if (auto r = root.find("robots"))
-    s.robot_positions = read_robots(*r, *s.environment, s.seed, s.draw);
+    s.robot_positions = read_robots(*r, *s.environment, s.coverage.radius, s.seed, s.draw);
   read_components(root, s.coverage);
   check_limits(root, s);
   // Checks that need the environment (grids too fine for it) fail here, not at a run's start.

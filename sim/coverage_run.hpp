@@ -59,6 +59,11 @@ struct CoverageOutcome {
   std::uint64_t target_outside_steps = 0;
   double stalled_time = 0.0;
   double centroid_distance_mean = 0.0, centroid_distance_max = 0.0;
+  // Bodies (CoverageController::body_gap_min and the rest): NaN and zeros for points.
+  double radius = 0.0;
+  double body_gap_min = NAN;
+  double contact_time = 0.0;
+  std::uint64_t wall_contacts = 0;
   // Wall-clock seconds spent in planner steps, and how many steps: the only measures besides
   // wall times that vary between runs.
   double planner_seconds = 0.0;

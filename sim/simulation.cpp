@@ -175,6 +175,10 @@ CoverageOutcome Simulation::outcome() const {
     out.centroid_distance_mean += r.centroid_distance / static_cast<double>(out.robots.size());
     out.centroid_distance_max = std::max(out.centroid_distance_max, r.centroid_distance);
   }
+  out.radius = c.config().radius;
+  out.body_gap_min = c.body_gap_min();
+  out.contact_time = c.contact_time();
+  out.wall_contacts = c.wall_contacts();
   out.planner_seconds = planner_totals_.seconds;
   out.planner_steps = planner_totals_.steps;
   return out;

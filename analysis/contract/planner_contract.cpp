@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/random_stream.hpp"
+#include "geometry/configuration_space.hpp"
 #include "geometry/environment.hpp"
 #include "geometry/placement.hpp"
 #include "geometry/visibility_graph.hpp"
@@ -38,7 +39,9 @@ struct ContractMap {
   Box below, above;        // combs: where starts and goals lie
 };
 
-ContractMap make_map(std::uint64_t seed, std::uint64_t group, CaseFamily family) {
+ContractMap make_map(std::uint64_t seed, std::uint64_t group, CaseFamily family, double radius) {
+  if (radius > 0.0 && family == CaseFamily::combs)
+    throw std::invalid_argument("a radius applies to the courses family, not to combs");
   RandomStream rng(seed, group, "contract-map");
   ContractMap m;
   ObstacleCourse c;
@@ -51,11 +54,23 @@ ContractMap make_map(std::uint64_t seed, std::uint64_t group, CaseFamily family)
     m.spec.width = rng.uniform(6.0, 12.0);
     m.spec.height = rng.uniform(6.0, 12.0);
     m.spec.obstacles = static_cast<std::uint32_t>(3 + rng.below(7));
-    m.spec.clearance = rng.uniform(0.1, 0.3);
+    m.spec.clearance = rng.uniform(0.1, 0.3) + 2.0 * radius;
     c = obstacle_course(rng.next_u64(), m.spec);
   }
   m.env = std::make_unique<Environment>(c.outer, c.holes);
-  m.narrowest = c.narrowest;
+  m.narrowest = c.narrowest - 2.0 * radius;
+  if (radius > 0.0) {
+    // The largest part of the course shrunk by the radius, as an environment of its own.
+    const ConfigurationSpace space(*m.env, radius);
+    std::size_t largest = 0;
+    for (std::size_t k = 1; k < space.part_count(); ++k) {
+      if (space.part(k).area() > space.part(largest).area()) largest = k;
+    }
+    m.env = std::make_unique<Environment>(
+        space.part(largest).outer(),
+        std::vector<std::vector<Vec2>>(space.part(largest).rings().begin() + 1,
+                                       space.part(largest).rings().end()));
+  }
   m.graph = std::make_unique<VisibilityGraph>(*m.env);
   for (const BoundaryEdge& e : m.env->boundary())
     m.boundary_length += distance(e.a, e.b);
@@ -98,9 +113,11 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
   res.seed = seed;
   res.index = index;
   res.reproducer = fmt::format(
-      "covsim planner-contract --planner {} --range {} --noise {} --step {}{} --seed {} --case {}",
+      "covsim planner-contract --planner {} --range {} --noise {} --step {}{}{} --seed {} --case "
+      "{}",
       setup.planner, number(setup.range), setup.noise_sigma, setup.step,
-      setup.family == CaseFamily::combs ? " --family combs" : "", seed, index);
+      setup.family == CaseFamily::combs ? " --family combs" : "",
+      setup.radius > 0.0 ? fmt::format(" --radius {}", setup.radius) : "", seed, index);
   RandomStream rng(seed, index, "contract-case");
   const auto in_box = [&](const Box& b) {
     return Vec2{rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
@@ -257,13 +274,14 @@ std::string_view to_string(CaseFamily f) {
 }
 
 std::string ContractSetup::label() const {
-  return fmt::format("{} range={} noise={}{}", planner, number(range), noise_sigma,
-                     family == CaseFamily::combs ? " combs" : "");
+  return fmt::format("{} range={} noise={}{}{}", planner, number(range), noise_sigma,
+                     family == CaseFamily::combs ? " combs" : "",
+                     radius > 0.0 ? fmt::format(" radius={}", radius) : "");
 }
 
 ContractResult run_contract_case(const ContractSetup& setup, std::uint64_t seed,
                                  std::uint64_t index) {
-  const ContractMap map = make_map(seed, index / kCasesPerMap, setup.family);
+  const ContractMap map = make_map(seed, index / kCasesPerMap, setup.family, setup.radius);
   return run_case(setup, map, seed, index, true);
 }
 
@@ -278,7 +296,7 @@ ContractSummary run_contract(const ContractSetup& setup, std::uint64_t seed, std
   std::mutex mutex;
   const auto work = [&] {
     for (std::uint64_t g = next++; g <= last_group && count > 0; g = next++) {
-      const ContractMap map = make_map(seed, g, setup.family);
+      const ContractMap map = make_map(seed, g, setup.family, setup.radius);
       for (std::uint64_t i = std::max(first, g * kCasesPerMap);
            i < std::min(first + count, (g + 1) * kCasesPerMap); ++i) {
         results[i - first] = run_case(setup, map, seed, i);

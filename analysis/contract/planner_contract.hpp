@@ -49,6 +49,12 @@ struct ContractSetup {
   double range = INFINITY;   // the range sensor's range, metres
   double noise_sigma = 0.0;  // Gaussian range noise, metres
   double step = 0.05;        // metres per step
+  // The robot's radius: the planner works in the largest part of the course shrunk by it
+  // (geometry/configuration_space), drawn with passages wider by 2 × radius, so that the
+  // shrunk course keeps the passages a point robot's has; starts lie in that part, and goals
+  // outside it (near a wall, in a grown obstacle, beyond a closed passage) are unreachable.
+  // The courses family only.
+  double radius = 0.0;
   // Whether the planner promises to reach what is reachable (and project the rest); unset:
   // what its registry entry declares (true for a planner given by `make` alone).
   std::optional<bool> complete;
@@ -58,7 +64,8 @@ struct ContractSetup {
   // Builds the planner under test for a course (a user's own planner, say); unset: the
   // planner named `planner`, from the registry.
   std::function<std::unique_ptr<Planner>(const Environment&, const SensorSpec&)> make;
-  // A one-line description, e.g. "tangent_bug range=0.5 noise=0" (" combs" for that family).
+  // A one-line description, e.g. "tangent_bug range=0.5 noise=0" (" combs" for that family,
+  // " radius=r" with a radius).
   std::string label() const;
 };
 

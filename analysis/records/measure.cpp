@@ -302,6 +302,30 @@ const std::vector<Measure>& measures() {
           .in_summary(),
       member("failures.centroid_distance_max", K::number, "m",
              "largest final distance from the cell's centroid", &O::centroid_distance_max),
+      member("bodies.radius", K::number, "m", "the robots' radius (0: points)", &O::radius).later(),
+      outcome(
+          "bodies.gap_min", K::number, "m",
+          "least distance between two robots' bodies at a motion step (negative: they overlapped; "
+          "null for points)",
+          [](const O& o) { return number_or_null(o.body_gap_min); },
+          [](O& o, const nlohmann::json& j) {
+            o.body_gap_min = j.is_null() ? NAN : j.get<double>();
+          })
+          .in_runs(33)
+          .in_summary()
+          .later(),
+      member("bodies.contact_time", K::number, "s",
+             "robot-seconds with a body overlapping another robot's", &O::contact_time)
+          .in_runs(34)
+          .in_summary()
+          .later(),
+      member("bodies.wall_contacts", K::integer, "",
+             "motion steps that ended with a body overlapping a wall (0 with a radius: robots "
+             "move in Ω shrunk by it)",
+             &O::wall_contacts)
+          .in_runs(35)
+          .in_summary()
+          .later(),
       member("planner.steps", K::integer, "", "planner steps taken", &O::planner_steps),
       outcome(
           "planner.step_time_us", K::number, "µs",

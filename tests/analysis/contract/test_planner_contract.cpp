@@ -363,3 +363,31 @@ TEST_CASE("contract: a planner registered before the suite runs gets the contrac
   REQUIRE(lies != nullptr);
   CHECK(lies->failures == 30);
 }
+
+TEST_CASE("contract: every planner keeps its promises for a robot with a body", "[contract]") {
+  // The planners work in the course shrunk by the radius: starts in its largest part, goals
+  // anywhere (near a wall, in a grown obstacle, beyond a closed passage: unreachable, to be
+  // projected onto the part).
+  ContractSetup s;
+  s.radius = 0.05;
+  for (double range : {0.0, 0.5, double(INFINITY)}) {
+    s.range = range;
+    const RegistryContract r = run_registry_contract(s, kPlannerSeed, 0, 150, 2);
+    INFO("range " << range << "\n" << report(r));
+    REQUIRE(r.checked.size() >= 5);
+    for (const auto& [name, summary] : r.checked) {
+      INFO(name);
+      CHECK(summary.failures == 0);
+      if (planner_registry().at(name).contract.complete) {
+        CHECK(summary.reached == summary.reachable);
+        CHECK(summary.reached + summary.projected == summary.cases);
+      }
+      CHECK(summary.reachable < summary.cases);  // some goals lie outside the shrunk course
+    }
+  }
+  const ContractResult one = run_contract_case(s, kPlannerSeed, 7);
+  CHECK(one.reproducer.find("--radius 0.05") != std::string::npos);
+  ContractSetup combs = s;
+  combs.family = CaseFamily::combs;
+  CHECK_THROWS_AS(run_contract_case(combs, kPlannerSeed, 0), std::invalid_argument);
+}
