@@ -39,6 +39,16 @@ void Marks::start(Canvas& c, Vec2 p, Colour col) const {
 void Marks::robot(Canvas& c, Vec2 p, Colour col) const {
   c.circle(p, 4.0 * u, col, Stroke{Colour::hex(0xffffff), 1.0 * u});
 }
+void Marks::body(Canvas& c, Vec2 p, double radius, Colour col) const {
+  if (radius <= 4.0 * u) {
+    robot(c, p, col);  // smaller than the mark: the mark
+    return;
+  }
+  Colour fill = col;
+  fill.a = 0.35;
+  c.circle(p, radius, fill, Stroke{col, 1.2 * u});
+  c.circle(p, 1.6 * u, col);
+}
 void Marks::generator(Canvas& c, Vec2 p, Colour col) const {
   c.square(p, 2.4 * u, col, Stroke{Colour::hex(0xffffff), 0.6 * u});
 }

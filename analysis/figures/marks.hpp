@@ -20,8 +20,11 @@ struct Marks {
   Stroke virtual_path(Colour c) const;  // a virtual generator's path: thin, dashed
   Stroke cells() const;
   Stroke real_cells() const;
-  void start(Canvas& c, Vec2 p, Colour col) const;      // hollow circle
-  void robot(Canvas& c, Vec2 p, Colour col) const;      // filled circle with a white rim
+  void start(Canvas& c, Vec2 p, Colour col) const;  // hollow circle
+  void robot(Canvas& c, Vec2 p, Colour col) const;  // filled circle with a white rim
+  // A robot with a body of `radius` px drawn to scale: a translucent disk in its colour with
+  // a solid rim, and the robot's mark at its centre when the body is larger than the mark.
+  void body(Canvas& c, Vec2 p, double radius, Colour col) const;
   void generator(Canvas& c, Vec2 p, Colour col) const;  // square
   void target(Canvas& c, Vec2 p) const;                 // cross
   void projected_target(Canvas& c, Vec2 p) const;       // yellow cross, black rim

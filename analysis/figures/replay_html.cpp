@@ -117,8 +117,9 @@ std::string data_literal(const RunFiles& run, std::size_t max_frames) {
     out += "]";
   }
   const Box& b = env.bounds();
-  fmt::format_to(std::back_inserter(out), "],\"lo\":[{},{}],\"hi\":[{},{}],\"robots\":{},", b.lo.x,
-                 b.lo.y, b.hi.x, b.hi.y, n);
+  fmt::format_to(std::back_inserter(out),
+                 "],\"lo\":[{},{}],\"hi\":[{},{}],\"robots\":{},\"radius\":{},", b.lo.x, b.lo.y,
+                 b.hi.x, b.hi.y, n, run.scenario.coverage.radius);
   fmt::format_to(std::back_inserter(out), "\"title\":{},\"cost_unit\":{},\"colours\":[",
                  script_string(scenario_name(run.scenario.source)), script_string(kCostUnit));
   // Each robot's colour, and the first three for the key's path (however many robots).
@@ -299,6 +300,13 @@ const mark = {
   path(g, x0, y, x1, colour) { g.strokeStyle = colour; g.lineWidth = 1.8; g.setLineDash([]); g.beginPath(); g.moveTo(x0, y); g.lineTo(x1, y); g.stroke(); },
   start(g, x, y, colour) { g.beginPath(); g.arc(x, y, 4.5, 0, 2 * Math.PI); g.fillStyle = "#fff"; g.fill(); g.strokeStyle = colour; g.lineWidth = 1.5; g.stroke(); },
   robot(g, x, y, colour) { g.beginPath(); g.arc(x, y, 5.5, 0, 2 * Math.PI); g.fillStyle = colour; g.fill(); g.strokeStyle = "#fff"; g.lineWidth = 1.2; g.stroke(); },
+  // A body to scale (radius in px), translucent with a solid rim; the mark when it is smaller.
+  body(g, x, y, r, colour) {
+    if (r <= 5.5) { mark.robot(g, x, y, colour); return; }
+    g.beginPath(); g.arc(x, y, r, 0, 2 * Math.PI); g.globalAlpha = 0.35; g.fillStyle = colour; g.fill();
+    g.globalAlpha = 1; g.strokeStyle = colour; g.lineWidth = 1.6; g.stroke();
+    g.beginPath(); g.arc(x, y, 2.2, 0, 2 * Math.PI); g.fill();
+  },
   generator(g, x, y, colour) { g.fillStyle = colour; g.fillRect(x - 3, y - 3, 6, 6); g.strokeStyle = "#fff"; g.lineWidth = 0.8; g.strokeRect(x - 3, y - 3, 6, 6); },
   target(g, x, y) { g.strokeStyle = INK; g.lineWidth = 1.5; cross(g, x, y, 4.5); },
   projected(g, x, y) { g.strokeStyle = "#000"; g.lineWidth = 4; cross(g, x, y, 6.5); g.strokeStyle = PROJECTED; g.lineWidth = 2; cross(g, x, y, 6.5); },
@@ -425,7 +433,7 @@ function draw(f) {
     mark.target(ctx, X(r[4]), Y(r[5]));
     mark.generator(ctx, X(r[2]), Y(r[3]), D.colours[i]);
     if (r[6] !== r[4] || r[7] !== r[5]) mark.projected(ctx, X(r[6]), Y(r[7]));
-    mark.robot(ctx, X(r[0]), Y(r[1]), D.colours[i]);
+    mark.body(ctx, X(r[0]), Y(r[1]), D.radius * scale, D.colours[i]);
     ctx.fillStyle = INK; ctx.fillText(String(i), X(r[0]) + 7, Y(r[1]) - 7);
     drawnRobots++;
   }

@@ -178,4 +178,22 @@ cp s/summary.csv summary-before.csv
 [ "$(ls s/*_vs_sensor.range.png | wc -l)" -eq "$svgs" ] || fail "merge --format png drew $(ls s/*.png | wc -l) of $svgs"
 png_size "$(ls s/*_vs_sensor.range.png | head -1)" > /dev/null
 cmp -s s/summary.csv summary-before.csv || fail "merging a sweep into itself changed its summary"
+# Bodies drawn to scale: two robots of radius r in a 1 m room cover 4 times the ink at 2r.
+for r in 0.08 0.16; do
+  cat > bodies-$r.json <<JSON
+{"environment": {"outer": [[0, 0], [1, 0], [1, 1], [0, 1]]}, "density": {"type": "uniform"},
+ "robots": {"positions": [[0.3, 0.5], [0.7, 0.5]], "radius": $r}, "seed": 1}
+JSON
+  "$covsim" run bodies-$r.json --out bodies-$r --format png --png-width 600 --layers robots > /dev/null
+done
+"$py" - bodies-0.08/scene.png bodies-0.16/scene.png <<'PY' || fail "bodies are not drawn to scale"
+import sys
+import matplotlib.image as mpimg
+def ink(f):
+    a = mpimg.imread(f)[..., :3]
+    return int(((a < 0.97).any(axis=2)).sum())
+small, large = ink(sys.argv[1]), ink(sys.argv[2])
+assert small > 500, small
+assert 3.6 < large / small < 4.4, (small, large)
+PY
 echo "figures ok"
