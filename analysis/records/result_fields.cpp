@@ -40,7 +40,8 @@ const FieldTable<RunMeasures>& run_fields() {
                                std::to_string(*m->run_place) + ", expected " +
                                std::to_string(out.size()));
       out.push_back({m->column(), m->kind, m->unit, m->description,
-                     [m](const RunMeasures& r) { return m->of(r); }, nullptr, m->summarized});
+                     [m](const RunMeasures& r) { return m->of(r); }, nullptr, m->summarized,
+                     m->added_later});
     }
     return out;
   }();

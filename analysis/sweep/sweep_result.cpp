@@ -55,8 +55,10 @@ std::optional<SweepResult> read_result(const fs::path& dir, std::size_t index) {
     for (const auto& f : run_fields()) {
       if (j.contains(f.name)) {
         r.values[f.name] = j.at(f.name);
+      } else if (f.added_later) {
+        r.values[f.name] = nullptr;  // written before the measure existed: unknown, kept
       } else if (!r.error) {
-        return std::nullopt;  // a damaged or older result is run again
+        return std::nullopt;  // a damaged result is run again
       }
     }
     return r;

@@ -160,6 +160,27 @@ TEST_CASE("a rerun skips finished runs and redoes missing ones", "[sweep]") {
   CHECK(comparable(first) == comparable(second));
 }
 
+TEST_CASE("a rerun keeps results written before a measure was added, and redoes damaged ones",
+          "[sweep]") {
+  const fs::path dir = temp_dir("older");
+  const SweepSpec spec = load_sweep(write_sweep(dir, kSweep));
+  run_sweep(spec, dir / "out", SweepOptions{1, false, 0, 1});
+  const auto edit = [&](const char* file, const char* key) {
+    std::ifstream in(dir / "out" / "runs" / file);
+    nlohmann::ordered_json j = nlohmann::ordered_json::parse(in);
+    j.erase(key);
+    j["wall_time"] = 12345.0;  // a rerun would write it anew
+    std::ofstream(dir / "out" / "runs" / file) << j.dump();
+  };
+  edit("1.json", "gap_min");      // a measure added later: an older covsim's result
+  edit("2.json", "fingerprint");  // a measure every result has: damaged
+  const auto second = run_sweep(spec, dir / "out", SweepOptions{1, false, 0, 1});
+  CHECK(second[1].number("wall_time") == 12345.0);
+  CHECK(second[1].values.at("gap_min").is_null());
+  CHECK(second[2].number("wall_time") != 12345.0);
+  CHECK(second[2].values.contains("fingerprint"));
+}
+
 TEST_CASE("a run whose series cannot be written is not recorded, and a rerun redoes it",
           "[sweep]") {
   const fs::path dir = temp_dir("series-full");
