@@ -18,6 +18,20 @@ def test_a_run_from_python_has_the_cli_fingerprint(name, scenarios, cli, tmp_pat
     assert out["cost"] == final["cost"]
 
 
+def test_bodies_from_python_have_the_cli_fingerprint_and_measures(scenarios, cli, tmp_path):
+    s = covsim.Scenario.from_file(scenarios / "u_shape.json").set("robots.radius", 0.02)
+    out = covsim.Simulation(s).run()
+    cli("run", scenarios / "u_shape.json", "--set", "robots.radius=0.02", "--out", tmp_path / "run")
+    final = json.loads((tmp_path / "run" / "final.json").read_text())
+    assert out["fingerprint"] == final["fingerprint"]
+    assert out["bodies"] == final["bodies"]
+    assert out["bodies"]["radius"] == 0.02 and out["bodies"]["wall_contacts"] == 0
+    assert out["fingerprint"] != covsim.Simulation(
+        covsim.Scenario.from_file(scenarios / "u_shape.json")).run()["fingerprint"]
+    with pytest.raises(covsim.ScenarioError, match=r"positions\[1\].*overlap"):
+        covsim.Scenario.from_file(scenarios / "u_shape.json").set("robots.radius", 0.05)
+
+
 def test_stepping_equals_a_whole_run(scenarios):
     s = covsim.Scenario.from_file(scenarios / "two_obstacles.json")
     s.set("network.loss", {"model": "bernoulli", "p": 0.2})
