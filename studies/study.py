@@ -213,6 +213,11 @@ def per_robot(row, measure, robots):
     return "–" if _missing(row[f"{measure}_mean"]) else f"{row[f'{measure}_mean'] / robots:.0f}"
 
 
+def milliseconds(row, measure):
+    """A time measure's mean, in milliseconds."""
+    return "–" if _missing(row[f"{measure}_mean"]) else f"{1000 * row[f'{measure}_mean']:.2f}"
+
+
 def parameter(value):
     """A swept value as summary.csv writes it, unlimited (`null`) as ∞."""
     return "∞" if value == "null" else str(value)
@@ -233,6 +238,14 @@ MEASURES = {
     "area_claimed_by_several": ("claimed by several [m²]",
                                 lambda row, _r: mean_ci(row, "area_claimed_by_several", "%.3g")),
     "connected": ("connected", lambda row, _r: percent(row, "connected_fraction_mean")),
+    "delivery_ratio": ("delivery ratio",
+                       lambda row, _r: mean_ci(row, "delivery_ratio", "%.3f")),
+    "latency_mean": ("latency [ms]", lambda row, _r: milliseconds(row, "latency_mean")),
+    "latency_p95": ("latency, 95th percentile [ms]",
+                    lambda row, _r: milliseconds(row, "latency_p95")),
+    "channel_occupancy": ("air busy",
+                          lambda row, _r: mean_ci(row, "channel_occupancy", "%.3f")),
+    "phy_drops": ("PHY drops per robot", lambda row, r: per_robot(row, "phy_drops", r)),
 }
 
 

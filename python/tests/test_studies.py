@@ -131,3 +131,22 @@ def test_a_sweep_with_a_failed_run_fails_the_study(scenarios, tmp_path, monkeypa
         study.run(lambda: study.sweep(bad, tmp_path / "bad", jobs=1))
     assert exit.value.code == 1
     assert "fidelity.py: ScenarioError: " in capsys.readouterr().err
+
+
+def test_the_radio_study_refuses_an_unknown_number_of_robots(monkeypatch, capsys):
+    import radio
+
+    assert [radio.grid(n)["robots"][0]["count"] for n in radio.COUNTS] == radio.COUNTS
+    # The limit on 100 robots' runs is part of their sweep, and the ideal reference shares
+    # every swept value but the channel's.
+    assert radio.grid(100)["convergence.max_time"] == [600.0]
+    assert "convergence.max_time" not in radio.grid(30)
+    for n in radio.COUNTS:
+        ideal = radio.ideal_grid(n)
+        assert {k: v for k, v in radio.grid(n).items() if not k.startswith("network.")} == ideal
+    for bad in ["7", "5,x", ""]:
+        monkeypatch.setattr(sys, "argv", ["radio.py", "--counts", bad])
+        with pytest.raises(SystemExit) as exit:
+            study.run(radio.main)
+        assert exit.value.code == 1
+        assert "radio.py: " in capsys.readouterr().err
