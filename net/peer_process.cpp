@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -100,16 +101,22 @@ void PeerProcess::send(ns3wire::FrameType type, const std::string& payload) {
 
 void PeerProcess::read_exactly(char* data, std::size_t size) {
   using clock = std::chrono::steady_clock;
-  const auto deadline = clock::now() + std::chrono::duration<double>(timeout_);
+  // The time waited is summed over the polls, each counted for at most twice its length: a
+  // process stopped and continued (Ctrl-Z, fg) has not waited for the peer all that time.
+  constexpr int kPollMs = 100;
+  double waited = 0.0;
   while (size > 0) {
     if (const int s = pending_interrupt()) throw Interrupted(s);
     pollfd pfd{fd_, POLLIN, 0};
     // Short polls, so that an interrupt is seen within a tenth of a second.
-    const int ready = ::poll(&pfd, 1, 100);
+    const auto before = clock::now();
+    const int ready = ::poll(&pfd, 1, kPollMs);
     if (ready < 0 && errno != EINTR)
       died(std::string("cannot wait for it: ") + std::strerror(errno));
     if (ready <= 0) {
-      if (clock::now() > deadline)
+      const double slice = std::chrono::duration<double>(clock::now() - before).count();
+      waited += std::min(slice, 2e-3 * kPollMs);
+      if (waited > timeout_)
         throw PeerError(fmt::format("{}: no answer within {:g} s", name_, timeout_));
       continue;
     }

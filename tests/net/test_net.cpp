@@ -10,6 +10,7 @@
 #include "net/constant_delay.hpp"
 #include "net/distance_loss.hpp"
 #include "net/exponential_delay.hpp"
+#include "net/peer_process.hpp"
 #include "net/gilbert_elliott_loss.hpp"
 #include "net/lognormal_delay.hpp"
 #include "net/neighbor_table.hpp"
@@ -215,4 +216,20 @@ TEST_CASE("the receiver grid finds every robot within range as robots move", "[n
     // A superset, but not the whole swarm: the grid is what makes a broadcast cheap.
     REQUIRE(found.size() < positions.size() / 4);
   }
+}
+
+TEST_CASE("a peer's answer timeout counts the time waited, not the time stopped", "[net][peer]") {
+  // The peer stops this process for 2 s (as Ctrl-Z and fg would), then answers at once: 0.3
+  // s of waiting, within a 1 s timeout.
+  PeerProcess slow("/bin/sh",
+                   {"-c",
+                    "sleep 0.2; kill -STOP $PPID; sleep 2; kill -CONT $PPID; sleep 0.1; "
+                    "printf '\\001\\000\\000\\000\\002\\000\\000\\000ok'; sleep 5"},
+                   1.0);
+  std::string payload;
+  CHECK(slow.receive(payload) == 1u);
+  CHECK(payload == "ok");
+  // A peer that really says nothing for longer is still an error.
+  PeerProcess silent("/bin/sh", {"-c", "sleep 5"}, 0.5);
+  CHECK_THROWS_WITH(silent.receive(payload), Catch::Contains("no answer within 0.5 s"));
 }
