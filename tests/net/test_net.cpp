@@ -10,11 +10,11 @@
 #include "net/constant_delay.hpp"
 #include "net/distance_loss.hpp"
 #include "net/exponential_delay.hpp"
-#include "net/peer_process.hpp"
 #include "net/gilbert_elliott_loss.hpp"
 #include "net/lognormal_delay.hpp"
 #include "net/neighbor_table.hpp"
 #include "net/no_loss.hpp"
+#include "net/peer_process.hpp"
 #include "net/receiver_grid.hpp"
 #include "net/uniform_delay.hpp"
 
@@ -219,13 +219,13 @@ TEST_CASE("the receiver grid finds every robot within range as robots move", "[n
 }
 
 TEST_CASE("a peer's answer timeout counts the time waited, not the time stopped", "[net][peer]") {
-  // The peer stops this process for 2 s (as Ctrl-Z and fg would), then answers at once: 0.3
-  // s of waiting, within a 1 s timeout.
+  // The peer stops this process for 4 s (as Ctrl-Z and fg would), then answers at once: some
+  // 0.3 s of waiting (more on a loaded machine), within a 3 s timeout.
   PeerProcess slow("/bin/sh",
                    {"-c",
-                    "sleep 0.2; kill -STOP $PPID; sleep 2; kill -CONT $PPID; sleep 0.1; "
+                    "sleep 0.2; kill -STOP $PPID; sleep 4; kill -CONT $PPID; sleep 0.1; "
                     "printf '\\001\\000\\000\\000\\002\\000\\000\\000ok'; sleep 5"},
-                   1.0);
+                   3.0);
   std::string payload;
   CHECK(slow.receive(payload) == 1u);
   CHECK(payload == "ok");
