@@ -66,10 +66,7 @@ ContractMap make_map(std::uint64_t seed, std::uint64_t group, CaseFamily family,
     for (std::size_t k = 1; k < space.part_count(); ++k) {
       if (space.part(k).area() > space.part(largest).area()) largest = k;
     }
-    m.env = std::make_unique<Environment>(
-        space.part(largest).outer(),
-        std::vector<std::vector<Vec2>>(space.part(largest).rings().begin() + 1,
-                                       space.part(largest).rings().end()));
+    m.env = std::make_unique<Environment>(space.part(largest));
   }
   m.graph = std::make_unique<VisibilityGraph>(*m.env);
   for (const BoundaryEdge& e : m.env->boundary())

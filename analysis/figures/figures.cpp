@@ -159,12 +159,7 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
     if (layers.has(Layer::targets) && r.projected)
       marks.projected_target(c, view.to_px(r.real_target));
     const Vec2 p = view.to_px(r.position);
-    if (layers.has(Layer::robots)) {
-      if (radius > 0.0)
-        marks.body(c, p, radius * view.px_per_metre(), col);
-      else
-        marks.robot(c, p, col);
-    }
+    if (layers.has(Layer::robots)) marks.body(c, p, radius * view.px_per_metre(), col);
     if (layers.has(Layer::ids)) marks.id(c, p, i, 0.9 * f);
   }
   if (axes) view.draw_scale_bar(c, f);

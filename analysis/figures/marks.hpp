@@ -23,7 +23,8 @@ struct Marks {
   void start(Canvas& c, Vec2 p, Colour col) const;  // hollow circle
   void robot(Canvas& c, Vec2 p, Colour col) const;  // filled circle with a white rim
   // A robot with a body of `radius` px drawn to scale: a translucent disk in its colour with
-  // a solid rim, and the robot's mark at its centre when the body is larger than the mark.
+  // a solid rim and a dot at its centre; the robot's mark when the body is no larger than it
+  // (points: radius 0).
   void body(Canvas& c, Vec2 p, double radius, Colour col) const;
   void generator(Canvas& c, Vec2 p, Colour col) const;  // square
   void target(Canvas& c, Vec2 p) const;                 // cross

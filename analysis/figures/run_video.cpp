@@ -211,12 +211,8 @@ class FrameDrawer {
       if (has(Layer::targets) && k.real_target[now] != k.virtual_target[now])
         marks_.projected_target(c, view_.to_px(k.real_target[now]));
       const Vec2 p = view_.to_px(k.position[now]);
-      if (has(Layer::robots)) {
-        if (scenario_.coverage.radius > 0.0)
-          marks_.body(c, p, scenario_.coverage.radius * view_.px_per_metre(), col);
-        else
-          marks_.robot(c, p, col);
-      }
+      if (has(Layer::robots))
+        marks_.body(c, p, scenario_.coverage.radius * view_.px_per_metre(), col);
       if (has(Layer::ids)) marks_.id(c, p, i, 0.9 * font_);
     }
     if (has(Layer::axes)) view_.draw_scale_bar(c, font_);
