@@ -1,12 +1,13 @@
 // `covsim list [WHAT] [--names]`: every registered component with its description and
 // parameters (kind, default, unit, bounds), and every fixed section of a scenario with its
-// keys, in the spirit of ns-3's attribute listing. WHAT is a component listing (planners,
-// laws, loss, delay, densities), "sections", or one section ("sensor"). `--names` prints the
+// keys, in the spirit of ns-3's attribute listing. WHAT is a component listing (a row of
+// component_sections()), "sections", or one section ("sensor"). `--names` prints the
 // names alone, one per line, for scripts (a section's keys as dotted paths);
 // `--reads-range` keeps the planners whose steps depend on the sensor's range; `--markdown`
 // prints the sections' tables as docs/scenario-format.md holds them, and `--update-docs FILE`
 // writes them into that file.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <functional>
 #include <iostream>
@@ -103,9 +104,14 @@ void update_docs(const std::string& file) {
 }
 
 // What `list` can show: the component listings, "sections" and each section.
-std::vector<std::string> listings() {
+std::vector<std::string> component_listings() {
   std::vector<std::string> out;
   for_each_component_section([&](const auto& row) { out.push_back(row.listing); });
+  return out;
+}
+
+std::vector<std::string> listings() {
+  std::vector<std::string> out = component_listings();
   out.emplace_back("sections");
   for (const ScenarioSection& s : scenario_sections())
     out.push_back(s.path);
@@ -126,11 +132,11 @@ void add_list_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
       "list",
-      "List the registered planners, coverage laws, loss and delay models and densities, and "
-      "the keys of a scenario's fixed sections");
+      "List the registered components of every extension point, and the keys of a "
+      "scenario's fixed sections");
   cmd->add_option("WHAT", o->what,
-                  "planners, laws, loss, delay, densities, sections, or a section such as "
-                  "sensor (default: all)")
+                  fmt::format("{}, sections, or a section such as sensor (default: all)",
+                              fmt::join(component_listings(), ", ")))
       ->check(CLI::IsMember(listings()));
   cmd->add_flag("--names", o->names, "Names only, one per line");
   cmd->add_flag("--reads-range", o->reads_range,

@@ -12,6 +12,7 @@
 #include "core/sim_time.hpp"
 #include "net/channel.hpp"
 #include "planners/planner_entry.hpp"
+#include "robot/collision_avoidance.hpp"
 #include "robot/coverage_law.hpp"
 #include "robot/sensor_model.hpp"
 
@@ -71,7 +72,8 @@ struct CoverageConfig {
   SimTime loop1_period = SimTime::from_ns(1'000'000'000);  // periodic mode only
   double max_speed = 0.1;                                  // m/s
   // Robots are disks of this radius (0: points): they plan and move in Ω ⊖ radius.
-  double radius = 0.0;  // m
+  double radius = 0.0;        // m
+  AvoidanceConfig avoidance;  // between bodies (radius > 0)
   SensorConfig sensor;
   PlannerConfig planner;
   // Convergence: every robot settled at its real target (within position_tolerance) and

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "planners/planner_registry.hpp"
+#include "robot/collision_avoidance_registry.hpp"
 #include "robot/component_error.hpp"
 #include "robot/coverage_law_registry.hpp"
 #include "robot/event_classes.hpp"
@@ -63,6 +65,8 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   sensor_ = std::make_unique<SensorModel>(
       kernel_, [this](std::uint32_t i) -> const Environment& { return free_space(i); },
       config_.sensor, robots_.size(), [this](std::uint32_t i) { return robots_[i].position; });
+  if (config_.radius > 0.0 && config_.avoidance.type != AvoidanceConfig{}.type)
+    avoidance_ = make_collision_avoidance(config_.avoidance);
   loop1_kind_ = kernel_.add_kind("loop1", [this](Kernel&, const Event& ev) { loop1(ev.entity); });
   loop2_kind_ =
       kernel_.add_kind("loop2", [this](Kernel& k, const Event& ev) { loop2(k, ev.entity); });
@@ -199,25 +203,27 @@ void CoverageController::set_goal(Robot& r, Vec2 goal) {
 
 void CoverageController::loop2(Kernel& k, std::uint32_t i) {
   Robot& r = robots_[i];
-  if (!is_settled(r.status)) {
+  const Vec2 before = r.position;
+  if (r.give_way > 0.0) {
+    give_way(r);
+  } else if (!is_settled(r.status) && r.waypoint) {
+    // On the way to the planner's last step, as far as the neighbours allow.
+    if (!follow_waypoint(k, r)) return;
+  } else if (!is_settled(r.status)) {
     // Algorithm 2, line 5: a planner step toward the real target, in the real world.
-    const PlanStep s = guarded(i, "planner", r.planner->name(), [&] {
-      const PlanStep step = r.planner->step(sensor_->reading(i, r.position), step_);
-      if (!is_finite(step.next))
-        throw std::invalid_argument(
-            fmt::format("a step must be a finite point, found ({}, {})", step.next.x, step.next.y));
-      return step;
-    });
-    // A robot moves at most its step length per planner step, whatever the planner asks.
-    if (!(distance(r.position, s.next) <= step_ * (1.0 + 1e-9))) {
-      throw std::runtime_error(fmt::format(
-          "robot {}'s planner {} proposed a step of {} m at t={} s; the step length is {} m", i,
-          r.planner->name(), distance(r.position, s.next), k.now().seconds(), step_));
-    }
+    PlanStep s = planner_step(k, r);
     // Most steps stay in Ω whole: the segment is then checked once, not again below. A body
     // moves in Ω shrunk by its radius: it stops where it would touch a wall.
     const Environment& space = free_space(i);
-    const bool whole = space.segment_inside(r.position, s.next);
+    bool whole = space.segment_inside(r.position, s.next);
+    if (r.displaced && !whole && r.planner->avoids_obstacles()) {
+      // A detour round a neighbour took the robot where its planner's way runs into a wall:
+      // the planner starts afresh from here.
+      set_goal(r, r.goal);
+      s = planner_step(k, r);
+      whole = space.segment_inside(r.position, s.next);
+    }
+    r.displaced = false;
     Vec2 next = whole ? s.next : space.advance(r.position, s.next);
     // Out of Ω: a motion that ends in an obstacle, or cuts through one deeper than the
     // position tolerance, ends the run with the robot where it crossed ∂Ω. A corner cut
@@ -233,33 +239,24 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
           fmt::format("robot {} left the environment at t={} s: ({}, {}) -> ({}, {})", i,
                       k.now().seconds(), r.position.x, r.position.y, next.x, next.y));
     }
-    r.path_length += distance(r.position, next);
-    r.position = next;
-    state_->move(Generators::positions, i, next);
-    view_->moved(i);
-    if (departed) {
-      departure_ = LeftEnvironment{i, k.now(), r.goal, next};
-      k.fingerprint().fold_state(next.x);
-      k.fingerprint().fold_state(next.y);
-      if (observer_ != nullptr) observer_->on_motion(k.now(), r);
-      k.stop();
-      return;
-    }
-    r.status = s.status;
-    r.stable = false;
-    if (config_.radius > 0.0 && space_->overlaps_boundary(next)) ++wall_contacts_;
-    if (s.status == PlanStatus::projected && space.contains(r.goal)) {
-      failure_ = PlannerFailure{i, k.now(), r.goal, r.position};
-      k.stop();
-      return;
-    }
-    // A planner that gives up on a target outside Ω: the target is unreachable, so the
-    // robot goes to its projection instead.
-    if (r.status == PlanStatus::stalled && r.projected && !(r.goal == r.real_target)) {
-      r.stalled_time += config_.loop2_period.seconds();
-      set_goal(r, r.real_target);
+    if (avoidance_ && !departed) {
+      r.waypoint = PlanStep{next, s.status};
+      r.waypoint_from = r.position;
+      if (!follow_waypoint(k, r)) return;
+    } else {
+      move_to(r, next);
+      if (departed) {
+        departure_ = LeftEnvironment{i, k.now(), r.goal, next};
+        k.fingerprint().fold_state(next.x);
+        k.fingerprint().fold_state(next.y);
+        if (observer_ != nullptr) observer_->on_motion(k.now(), r);
+        k.stop();
+        return;
+      }
+      if (!arrive(k, r, s.status)) return;
     }
   }
+  if (avoidance_) r.velocity = (r.position - before) / config_.loop2_period.seconds();
   if (r.projected) ++r.target_outside_steps;
   if (r.status == PlanStatus::stalled) r.stalled_time += config_.loop2_period.seconds();
   if (law_->moves_virtual_generators()) {
@@ -278,6 +275,217 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     k.schedule_at(k.now() + config_.loop2_period, loop1_kind_, i, event_class::loop1);
   }
   if (observer_ != nullptr) observer_->on_motion(k.now(), r);
+}
+
+PlanStep CoverageController::planner_step(const Kernel& k, Robot& r) {
+  const PlanStep s = guarded(r.id, "planner", r.planner->name(), [&] {
+    const PlanStep step = r.planner->step(sensor_->reading(r.id, r.position), step_);
+    if (!is_finite(step.next))
+      throw std::invalid_argument(
+          fmt::format("a step must be a finite point, found ({}, {})", step.next.x, step.next.y));
+    return step;
+  });
+  // A robot moves at most its step length per planner step, whatever the planner asks.
+  if (!(distance(r.position, s.next) <= step_ * (1.0 + 1e-9))) {
+    throw std::runtime_error(fmt::format(
+        "robot {}'s planner {} proposed a step of {} m at t={} s; the step length is {} m", r.id,
+        r.planner->name(), distance(r.position, s.next), k.now().seconds(), step_));
+  }
+  return s;
+}
+
+void CoverageController::move_to(Robot& r, Vec2 next) {
+  r.path_length += distance(r.position, next);
+  r.position = next;
+  state_->move(Generators::positions, r.id, next);
+  view_->moved(r.id);
+}
+
+bool CoverageController::arrive(Kernel& k, Robot& r, PlanStatus status) {
+  r.status = status;
+  r.stable = false;
+  if (config_.radius > 0.0 && space_->overlaps_boundary(r.position)) ++wall_contacts_;
+  if (status == PlanStatus::projected && free_space(r.id).contains(r.goal)) {
+    failure_ = PlannerFailure{r.id, k.now(), r.goal, r.position};
+    k.stop();
+    return false;
+  }
+  // A planner that gives up on a target outside Ω: the target is unreachable, so the
+  // robot goes to its projection instead.
+  if (r.status == PlanStatus::stalled && r.projected && !(r.goal == r.real_target)) {
+    r.stalled_time += config_.loop2_period.seconds();
+    set_goal(r, r.real_target);
+  }
+  return true;
+}
+
+void CoverageController::sense_neighbors(const Robot& r) {
+  // Those within the avoidance's range and in sight.
+  const double range =
+      avoidance_->range(config_.radius, config_.max_speed, config_.loop2_period.seconds());
+  neighbors_.clear();
+  for (const Robot& o : robots_) {
+    if (o.id == r.id || !within(o.position, r.position, range) ||
+        !env_.segment_inside(r.position, o.position))
+      continue;
+    neighbors_.push_back(SensedNeighbor{o.position, o.velocity});
+  }
+}
+
+Vec2 CoverageController::avoiding_velocity(const Robot& r, Vec2 preferred, double max_speed) {
+  sense_neighbors(r);
+  return guarded(r.id, "collision avoidance", config_.avoidance.type, [&] {
+    const Vec2 v =
+        avoidance_->velocity(AvoidanceQuery{r.position, r.velocity, preferred, config_.radius,
+                                            max_speed, config_.loop2_period.seconds(), neighbors_});
+    if (!is_finite(v) || !(norm(v) <= max_speed * (1 + 1e-9)))
+      throw std::invalid_argument(fmt::format(
+          "a velocity must be finite and at most {} m/s, found ({}, {})", max_speed, v.x, v.y));
+    return v;
+  });
+}
+
+bool CoverageController::follow_waypoint(Kernel& k, Robot& r) {
+  const PlanStep w = *r.waypoint;
+  const double dt = config_.loop2_period.seconds();
+  const Environment& space = free_space(r.id);
+  // A step that ends the planner's episode (at the goal, or settled at the closest point)
+  // is followed to its point; a step on the way only as far along its direction, so that a
+  // detour round a neighbour is kept rather than undone.
+  const bool last = w.status != PlanStatus::moving;
+  const Vec2 planned_way = w.next - r.waypoint_from;
+  const double planned_length = norm(planned_way);
+  const auto left = [&](Vec2 p) {
+    return last || planned_length == 0.0 ? distance(p, w.next)
+                                         : dot(w.next - p, planned_way) / planned_length;
+  };
+  const Vec2 preferred =
+      last || planned_length == 0.0 || r.position == r.waypoint_from
+          ? (w.next - r.position) / dt
+          : (std::max(0.0, left(r.position)) / planned_length / dt) * planned_way;
+  // No faster than the waypoint needs: a detour never passes it.
+  const Vec2 v = avoiding_velocity(r, preferred, norm(preferred));
+  Vec2 to = v == preferred ? w.next : r.position + dt * v;
+  // A detour keeps the waypoint in sight, within the free space; otherwise only the part of
+  // the velocity along the way to it is taken.
+  if (!(to == w.next) &&
+      !(space.segment_inside(r.position, to) && space.segment_inside(to, w.next))) {
+    const Vec2 d = w.next - r.position;
+    const double f = std::clamp(dot(to - r.position, d) / norm2(d), 0.0, 1.0);
+    to = f == 1.0 ? w.next : r.position + f * d;
+  }
+  // Never nearer to a body than touching, whatever the avoidance chose.
+  const double g = clear_fraction(r, to);
+  if (g < 1.0) to = r.position + g * (to - r.position);
+  const double before = left(r.position);
+  // Blocked: a tenth of the way or less made good (pushed back counts as blocked).
+  const bool blocked = before - left(to) < 0.1 * before;
+  move_to(r, to);
+  // A deadlock begins after kDeadlockTime blocked, and lasts until the robot reaches a
+  // planner step again.
+  r.blocked_time = blocked ? r.blocked_time + dt : 0.0;
+  if (r.deadlocked) {
+    deadlock_time_ += dt;
+  } else if (r.blocked_time >= kDeadlockTime) {
+    r.deadlocked = true;
+    ++deadlocks_;
+    deadlock_time_ += r.blocked_time;
+  }
+  // On the way, nine tenths of the step along its direction will do: the planner steps on
+  // from where the robot is.
+  if (to == w.next || (!last && left(to) <= 0.1 * planned_length)) {
+    r.displaced = !(to == w.next);
+    r.waypoint.reset();
+    if (r.deadlocked) ++deadlocks_resolved_;
+    r.deadlocked = false;
+    return arrive(k, r, w.status);
+  }
+  if (blocked && std::fmod(r.blocked_time + 0.5 * dt, kDeadlockTime) < dt) resolve(r);
+  return true;
+}
+
+void CoverageController::resolve(Robot& r) {
+  // Who stands on the waypoint, if anyone.
+  Robot* occupant = nullptr;
+  for (Robot& o : robots_) {
+    if (o.id != r.id && distance(o.position, r.waypoint->next) < 2.0 * config_.radius &&
+        (occupant == nullptr ||
+         distance(o.position, r.waypoint->next) < distance(occupant->position, r.waypoint->next)))
+      occupant = &o;
+  }
+  if (occupant == nullptr) {
+    // Held up by its neighbours' avoidance: the planner is asked again from here.
+    r.waypoint.reset();
+    r.displaced = true;
+  } else if (occupant->deadlocked && occupant->id < r.id) {
+    // Two robots in each other's way: the larger id gives way.
+    start_giving_way(r, occupant->position);
+  } else if (!occupant->deadlocked && occupant->give_way == 0.0 && is_settled(occupant->status)) {
+    // A robot settled on the way steps aside, then returns to its goal.
+    start_giving_way(*occupant, r.position);
+  }
+}
+
+void CoverageController::start_giving_way(Robot& r, Vec2 from) {
+  // Long enough to move two body diameters at top speed.
+  r.give_way = std::max(4.0 * config_.radius / config_.max_speed, config_.loop2_period.seconds());
+  r.give_way_from = from;
+  r.status = PlanStatus::moving;
+  r.stable = false;
+  ++give_ways_;
+}
+
+void CoverageController::give_way(Robot& r) {
+  const double dt = config_.loop2_period.seconds();
+  const Environment& space = free_space(r.id);
+  // To its own right as it faces the robot it makes room for (the side ORCA's bias passes
+  // on), else back and right, straight back, back and left, or left: the first the walls
+  // allow.
+  const Vec2 away = r.position - r.give_way_from;
+  const Vec2 unit = away / norm(away);
+  Vec2 to = r.position;
+  for (const double turn : {std::numbers::pi / 2, std::numbers::pi / 4, 0.0, -std::numbers::pi / 4,
+                            -std::numbers::pi / 2}) {
+    const double c = std::cos(turn), s = std::sin(turn);
+    const Vec2 d{c * unit.x - s * unit.y, s * unit.x + c * unit.y};
+    const Vec2 q = r.position + dt * avoiding_velocity(r, config_.max_speed * d, config_.max_speed);
+    if (space.segment_inside(r.position, q)) {
+      to = q;
+      break;
+    }
+  }
+  const double g = clear_fraction(r, to);
+  move_to(r, g < 1.0 ? r.position + g * (to - r.position) : to);
+  r.give_way = std::max(0.0, r.give_way - dt);
+  if (r.deadlocked) deadlock_time_ += dt;
+  if (r.give_way == 0.0) {
+    // Back to its goal, with its planner started afresh from here.
+    r.waypoint.reset();
+    r.blocked_time = 0.0;
+    set_goal(r, r.goal);
+  }
+}
+
+double CoverageController::clear_fraction(const Robot& r, Vec2 to) const {
+  const Vec2 d = to - r.position;
+  const double a = norm2(d);
+  if (a == 0.0) return 1.0;
+  const double reach = 2.0 * config_.radius;
+  double g = 1.0;
+  for (const Robot& o : robots_) {
+    if (o.id == r.id || !within(o.position, r.position, reach + std::sqrt(a))) continue;
+    // The first point of the motion nearer to o than touching (or than it already is).
+    const Vec2 e = r.position - o.position;
+    const double b = 2.0 * dot(e, d);
+    if (b >= 0.0) continue;  // moving away from o
+    const double least = std::min(reach, norm(e));
+    const double c = norm2(e) - least * least;
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) continue;
+    const double s = (-b - std::sqrt(disc)) / (2.0 * a);
+    g = std::min(g, std::max(0.0, s));
+  }
+  return g;
 }
 
 void CoverageController::check_bodies() {

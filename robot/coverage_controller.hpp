@@ -40,6 +40,7 @@
 
 #include "core/kernel.hpp"
 #include "geometry/configuration_space.hpp"
+#include "robot/collision_avoidance.hpp"
 #include "robot/coverage_config.hpp"
 #include "robot/generator_state.hpp"
 #include "robot/neighbor_view.hpp"
@@ -104,6 +105,16 @@ class CoverageController {
   double body_gap_min() const { return body_gap_min_; }
   double contact_time() const { return contact_time_; }
   std::uint64_t wall_contacts() const { return wall_contacts_; }
+  // With collision avoidance: deadlocks (a robot blocked short of its planner's step by its
+  // neighbours, making good a tenth of the way or less, for kDeadlockTime or longer; one lasts
+  // until the robot reaches a planner step again), the robot-seconds they lasted, and how many
+  // of them ended before the run did.
+  static constexpr double kDeadlockTime = 1.0;  // s
+  std::uint64_t deadlocks() const { return deadlocks_; }
+  double deadlock_time() const { return deadlock_time_; }
+  std::uint64_t deadlocks_resolved() const { return deadlocks_resolved_; }
+  // Times a robot stepped aside to let another by.
+  std::uint64_t give_ways() const { return give_ways_; }
   const CellIntegrator& integrator() const { return integrator_; }
   const CoverageLaw& law() const { return *law_; }
   CoverageLaw& law() { return *law_; }
@@ -141,6 +152,28 @@ class CoverageController {
   void check(Kernel& k);
   // Body distances and contacts at a motion step (radius > 0).
   void check_bodies();
+  // Robot r's planner's next step from where it is; throws for a step that is not finite or
+  // longer than the step length.
+  PlanStep planner_step(const Kernel& k, Robot& r);
+  void move_to(Robot& r, Vec2 next);
+  // The robot is at its planner's step, which ended with this status; false: the run stops.
+  bool arrive(Kernel& k, Robot& r, PlanStatus status);
+  // A motion step toward r's waypoint with collision avoidance; false: the run stops.
+  bool follow_waypoint(Kernel& k, Robot& r);
+  // What robot r senses of its neighbours, into neighbors_.
+  void sense_neighbors(const Robot& r);
+  // The avoidance's velocity for robot r from what it senses; throws for one that is not
+  // finite or faster than max_speed.
+  Vec2 avoiding_velocity(const Robot& r, Vec2 preferred, double max_speed);
+  // A robot deadlocked for a while: replanned, or one of the two in each other's way (the
+  // larger id, or a settled robot on the waypoint) gives way.
+  void resolve(Robot& r);
+  void start_giving_way(Robot& r, Vec2 from);
+  // A motion step away from the robot it makes room for; at the end it returns to its goal.
+  void give_way(Robot& r);
+  // The largest fraction of the straight motion from r's position to `to` that brings its
+  // body no nearer to another's than touching (or than it already is).
+  double clear_fraction(const Robot& r, Vec2 to) const;
 
   Kernel& kernel_;
   const Environment& env_;
@@ -148,6 +181,10 @@ class CoverageController {
   std::vector<std::size_t> part_;  // robot i's part of space_
   double body_gap_min_ = NAN, contact_time_ = 0.0;
   std::uint64_t wall_contacts_ = 0;
+  std::unique_ptr<CollisionAvoidance> avoidance_;  // unset: none
+  std::vector<SensedNeighbor> neighbors_;
+  std::uint64_t deadlocks_ = 0, deadlocks_resolved_ = 0, give_ways_ = 0;
+  double deadlock_time_ = 0.0;
   CellIntegrator integrator_;
   CoverageConfig config_;
   Tolerances tol_;

@@ -3,6 +3,7 @@
 // (where it would be if there were no obstacles), and the two targets.
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "planners/planner.hpp"
 
@@ -23,6 +24,19 @@ struct Robot {
   std::uint64_t target_outside_steps = 0;
   double stalled_time = 0.0;
   PlanStatus status = PlanStatus::reached;
+  // With collision avoidance: the planner's step not yet reached (the robot follows it over
+  // as many motion steps as its neighbours allow; its status applies once there), the
+  // velocity of the last motion step, how long it has been blocked short of the waypoint,
+  // and whether that has become a deadlock (until it reaches a planner step again).
+  std::optional<PlanStep> waypoint;
+  Vec2 waypoint_from;      // where the robot was when its planner proposed the waypoint
+  bool displaced = false;  // it took the last step on the way only nearly (a detour)
+  Vec2 velocity;
+  double blocked_time = 0.0;
+  bool deadlocked = false;
+  // Stepping aside for another robot for this many more seconds, away from this point.
+  double give_way = 0.0;
+  Vec2 give_way_from;
   double path_length = 0.0;
   std::unique_ptr<Planner> planner;
 };

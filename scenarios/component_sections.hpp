@@ -14,6 +14,7 @@
 #include "net/delay_registry.hpp"
 #include "net/loss_registry.hpp"
 #include "planners/planner_registry.hpp"
+#include "robot/collision_avoidance_registry.hpp"
 #include "robot/coverage_law_registry.hpp"
 
 namespace covsim {
@@ -45,7 +46,10 @@ inline const auto& component_sections() {
       ComponentSection<ChannelEntry>{"channels", "network.channel", "type", std::string("abstract"),
                                      R"({"type": "abstract"})", channel_registry},
       ComponentSection<DensityEntry>{"densities", "density", "type", std::nullopt, "",
-                                     density_registry}};
+                                     density_registry},
+      ComponentSection<AvoidanceEntry>{"avoidance", "robots.avoidance", "type",
+                                       AvoidanceConfig{}.type, R"({"type": "none"})",
+                                       collision_avoidance_registry}};
   return sections;
 }
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "net/channel_registry.hpp"
+#include "robot/collision_avoidance_registry.hpp"
 #include "scenarios/scenario_sections.hpp"
 
 namespace covsim {
@@ -34,6 +35,10 @@ std::vector<DocTable> scenario_doc_tables() {
   // A channel model's keys sit in network.channel beside its type (ns3_wifi's radio).
   for (const ChannelEntry& e : channel_registry().entries()) {
     if (!e.params.empty()) out.push_back({"network.channel." + e.name, markdown_table(e.params)});
+  }
+  // And a collision avoidance's in robots.avoidance (orca's horizon).
+  for (const AvoidanceEntry& e : collision_avoidance_registry().entries()) {
+    if (!e.params.empty()) out.push_back({"robots.avoidance." + e.name, markdown_table(e.params)});
   }
   return out;
 }

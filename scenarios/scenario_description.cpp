@@ -72,15 +72,15 @@ nlohmann::ordered_json describe_scenario(const Scenario& s) {
     for (const auto& [k, v] : keys.items())
       out[section.path][k] = v;
   }
-  if (out.contains("network")) {
-    const nlohmann::json& network = s.json.at("network");
-    for_each_component_section([&](const auto& row) {
-      const std::string prefix = "network.";
-      if (row.path.rfind(prefix, 0) != 0) return;
-      const std::string key = row.path.substr(prefix.size());
-      out["network"][key] = reread(s, row, network.contains(key) ? &network.at(key) : nullptr);
-    });
-  }
+  // Components inside a fixed section (network.loss, robots.avoidance): where the section is.
+  for_each_component_section([&](const auto& row) {
+    const auto dot = row.path.find('.');
+    if (dot == std::string::npos) return;
+    const std::string section = row.path.substr(0, dot), key = row.path.substr(dot + 1);
+    if (!out.contains(section)) return;
+    const nlohmann::json& in = s.json.contains(section) ? s.json.at(section) : nlohmann::json();
+    out[section][key] = reread(s, row, in.is_object() && in.contains(key) ? &in.at(key) : nullptr);
+  });
   return out;
 }
 

@@ -135,6 +135,16 @@ void read_components(const JsonValue& root, CoverageConfig& c) {
     const ComponentChoice choice = read_component(*p, component_section<PlannerEntry>());
     c.planner = PlannerConfig{choice.type, choice.params};
   }
+  if (auto r = root.find("robots")) {
+    if (auto a = r->find("avoidance")) {
+      const ComponentChoice choice = read_component(*a, component_section<AvoidanceEntry>());
+      c.avoidance = AvoidanceConfig{choice.type, choice.params};
+      if (c.radius == 0.0 && c.avoidance.type != AvoidanceConfig{}.type)
+        a->fail(fmt::format(
+            "{} avoids bodies, and robots.radius is 0 (points): give the robots a radius",
+            c.avoidance.type));
+    }
+  }
   if (auto k = root.find("controller")) {
     // The section's own keys (the projection policy) are read with the fixed sections.
     std::vector<std::string> own;

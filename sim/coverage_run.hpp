@@ -64,6 +64,9 @@ struct CoverageOutcome {
   double body_gap_min = NAN;
   double contact_time = 0.0;
   std::uint64_t wall_contacts = 0;
+  // Collision avoidance (CoverageController::deadlocks and the rest): zeros without it.
+  std::uint64_t deadlocks = 0, deadlocks_resolved = 0;
+  double deadlock_time = 0.0;
   // Wall-clock seconds spent in planner steps, and how many steps: the only measures besides
   // wall times that vary between runs.
   double planner_seconds = 0.0;

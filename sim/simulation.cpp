@@ -179,6 +179,9 @@ CoverageOutcome Simulation::outcome() const {
   out.body_gap_min = c.body_gap_min();
   out.contact_time = c.contact_time();
   out.wall_contacts = c.wall_contacts();
+  out.deadlocks = c.deadlocks();
+  out.deadlock_time = c.deadlock_time();
+  out.deadlocks_resolved = c.deadlocks_resolved();
   out.planner_seconds = planner_totals_.seconds;
   out.planner_steps = planner_totals_.steps;
   return out;

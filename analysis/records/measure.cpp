@@ -326,6 +326,22 @@ const std::vector<Measure>& measures() {
           .in_runs(35)
           .in_summary()
           .later(),
+      member("bodies.deadlocks", K::integer, "",
+             "times a robot was blocked by its neighbours, making good a tenth of its planner's "
+             "step or less, for 1 s or longer (with collision avoidance)",
+             &O::deadlocks)
+          .in_runs(36)
+          .in_summary()
+          .later(),
+      member("bodies.deadlock_time", K::number, "s", "robot-seconds those deadlocks lasted",
+             &O::deadlock_time)
+          .in_runs(37)
+          .in_summary()
+          .later(),
+      member("bodies.deadlocks_resolved", K::integer, "",
+             "deadlocks that ended, the robot reaching a planner step again, before the run did",
+             &O::deadlocks_resolved)
+          .later(),
       member("planner.steps", K::integer, "", "planner steps taken", &O::planner_steps),
       outcome(
           "planner.step_time_us", K::number, "µs",
