@@ -14,6 +14,7 @@
 #include "planners/planner_entry.hpp"
 #include "robot/collision_avoidance.hpp"
 #include "robot/coverage_law.hpp"
+#include "robot/kinematics.hpp"
 #include "robot/sensor_model.hpp"
 
 namespace covsim {
@@ -74,6 +75,7 @@ struct CoverageConfig {
   // Robots are disks of this radius (0: points): they plan and move in Ω ⊖ radius.
   double radius = 0.0;        // m
   AvoidanceConfig avoidance;  // between bodies (radius > 0)
+  KinematicsConfig kinematics;
   SensorConfig sensor;
   PlannerConfig planner;
   // Convergence: every robot settled at its real target (within position_tolerance) and

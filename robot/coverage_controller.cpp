@@ -13,7 +13,9 @@
 #include "robot/coverage_law_registry.hpp"
 #include "robot/event_classes.hpp"
 #include "robot/ideal_view.hpp"
+#include "robot/kinematics_registry.hpp"
 #include "robot/networked_view.hpp"
+#include "robot/turn_then_drive.hpp"
 
 namespace covsim {
 
@@ -67,6 +69,7 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
       config_.sensor, robots_.size(), [this](std::uint32_t i) { return robots_[i].position; });
   if (config_.radius > 0.0 && config_.avoidance.type != AvoidanceConfig{}.type)
     avoidance_ = make_collision_avoidance(config_.avoidance);
+  kinematics_ = make_kinematics(config_.kinematics, KinematicsContext{config_.max_speed});
   loop1_kind_ = kernel_.add_kind("loop1", [this](Kernel&, const Event& ev) { loop1(ev.entity); });
   loop2_kind_ =
       kernel_.add_kind("loop2", [this](Kernel& k, const Event& ev) { loop2(k, ev.entity); });
@@ -239,7 +242,7 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
           fmt::format("robot {} left the environment at t={} s: ({}, {}) -> ({}, {})", i,
                       k.now().seconds(), r.position.x, r.position.y, next.x, next.y));
     }
-    if (avoidance_ && !departed) {
+    if ((avoidance_ || kinematics_) && !departed) {
       r.waypoint = PlanStep{next, s.status};
       r.waypoint_from = r.position;
       if (!follow_waypoint(k, r)) return;
@@ -332,6 +335,25 @@ void CoverageController::sense_neighbors(const Robot& r) {
   }
 }
 
+bool CoverageController::arrive_at_waypoint(Kernel& k, Robot& r) {
+  const PlanStatus status = r.waypoint->status;
+  r.waypoint.reset();
+  if (r.deadlocked) ++deadlocks_resolved_;
+  r.deadlocked = false;
+  return arrive(k, r, status);
+}
+
+Vec2 CoverageController::drive(Robot& r, Vec2 to) {
+  if (!kinematics_) return to;
+  const BodyMotion m =
+      kinematics_->move(r.position, r.body, r.driving_to, to, config_.loop2_period.seconds());
+  r.body = m.state;
+  r.driving_to = to;
+  if (m.hard_stop) ++hard_stops_;
+  turn_time_ += m.turning;
+  return m.arrived ? to : m.position;
+}
+
 Vec2 CoverageController::avoiding_velocity(const Robot& r, Vec2 preferred, double max_speed) {
   sense_neighbors(r);
   return guarded(r.id, "collision avoidance", config_.avoidance.type, [&] {
@@ -363,24 +385,32 @@ bool CoverageController::follow_waypoint(Kernel& k, Robot& r) {
       last || planned_length == 0.0 || r.position == r.waypoint_from
           ? (w.next - r.position) / dt
           : (std::max(0.0, left(r.position)) / planned_length / dt) * planned_way;
-  // No faster than the waypoint needs: a detour never passes it.
-  const Vec2 v = avoiding_velocity(r, preferred, norm(preferred));
-  Vec2 to = v == preferred ? w.next : r.position + dt * v;
-  // A detour keeps the waypoint in sight, within the free space; otherwise only the part of
-  // the velocity along the way to it is taken.
-  if (!(to == w.next) &&
-      !(space.segment_inside(r.position, to) && space.segment_inside(to, w.next))) {
-    const Vec2 d = w.next - r.position;
-    const double f = std::clamp(dot(to - r.position, d) / norm2(d), 0.0, 1.0);
-    to = f == 1.0 ? w.next : r.position + f * d;
+  Vec2 to = w.next;
+  bool blocked = false;
+  if (avoidance_) {
+    // No faster than the waypoint needs: a detour never passes it.
+    const Vec2 v = avoiding_velocity(r, preferred, norm(preferred));
+    to = v == preferred ? w.next : r.position + dt * v;
+    // A detour keeps the waypoint in sight, within the free space; otherwise only the part of
+    // the velocity along the way to it is taken.
+    if (!(to == w.next) &&
+        !(space.segment_inside(r.position, to) && space.segment_inside(to, w.next))) {
+      const Vec2 d = w.next - r.position;
+      const double f = std::clamp(dot(to - r.position, d) / norm2(d), 0.0, 1.0);
+      to = f == 1.0 ? w.next : r.position + f * d;
+    }
+    // Never nearer to a body than touching, whatever the avoidance chose.
+    const double g = clear_fraction(r, to);
+    if (g < 1.0) to = r.position + g * (to - r.position);
+    // Blocked: a tenth of the way or less made good (pushed back counts as blocked).
+    const double before = left(r.position);
+    blocked = before - left(to) < 0.1 * before;
   }
-  // Never nearer to a body than touching, whatever the avoidance chose.
-  const double g = clear_fraction(r, to);
-  if (g < 1.0) to = r.position + g * (to - r.position);
-  const double before = left(r.position);
-  // Blocked: a tenth of the way or less made good (pushed back counts as blocked).
-  const bool blocked = before - left(to) < 0.1 * before;
-  move_to(r, to);
+  // The body carries the motion out as far as it can in the step; the way to `to` is clear
+  // and free, and the body stays on it.
+  const Vec2 at = drive(r, to);
+  move_to(r, at);
+  if (!avoidance_) return at == w.next ? arrive_at_waypoint(k, r) : true;
   // A deadlock begins after kDeadlockTime blocked, and lasts until the robot reaches a
   // planner step again.
   r.blocked_time = blocked ? r.blocked_time + dt : 0.0;
@@ -391,14 +421,12 @@ bool CoverageController::follow_waypoint(Kernel& k, Robot& r) {
     ++deadlocks_;
     deadlock_time_ += r.blocked_time;
   }
-  // On the way, nine tenths of the step along its direction will do: the planner steps on
-  // from where the robot is.
-  if (to == w.next || (!last && left(to) <= 0.1 * planned_length)) {
-    r.displaced = !(to == w.next);
-    r.waypoint.reset();
-    if (r.deadlocked) ++deadlocks_resolved_;
-    r.deadlocked = false;
-    return arrive(k, r, w.status);
+  // On the way, nine tenths of the step along its direction will do (for a body at rest, or
+  // one that can change direction at once): the planner steps on from where the robot is.
+  if (at == w.next ||
+      (!last && (!kinematics_ || r.body.speed == 0.0) && left(at) <= 0.1 * planned_length)) {
+    r.displaced = !(at == w.next);
+    return arrive_at_waypoint(k, r);
   }
   if (blocked && std::fmod(r.blocked_time + 0.5 * dt, kDeadlockTime) < dt) resolve(r);
   return true;
@@ -427,9 +455,31 @@ void CoverageController::resolve(Robot& r) {
 }
 
 void CoverageController::start_giving_way(Robot& r, Vec2 from) {
-  // Long enough to move two body diameters at top speed.
-  r.give_way = std::max(4.0 * config_.radius / config_.max_speed, config_.loop2_period.seconds());
-  r.give_way_from = from;
+  // Two body diameters to its own right as it faces the robot it makes room for (the side
+  // ORCA's bias passes on), else back and right, straight back, back and left, or left: the
+  // first the walls leave a body's radius of room in, else the roomiest.
+  const Environment& space = free_space(r.id);
+  const Vec2 away = r.position - from;
+  const Vec2 unit = away / norm(away);
+  const double length = 4.0 * config_.radius;
+  r.give_way_to = r.position;
+  for (const double turn : {std::numbers::pi / 2, std::numbers::pi / 4, 0.0, -std::numbers::pi / 4,
+                            -std::numbers::pi / 2}) {
+    const double c = std::cos(turn), s = std::sin(turn);
+    const Vec2 d{c * unit.x - s * unit.y, s * unit.x + c * unit.y};
+    const Vec2 q = space.advance(r.position, r.position + length * d);
+    if (distance(r.position, q) > distance(r.position, r.give_way_to)) r.give_way_to = q;
+    if (distance(r.position, q) >= config_.radius) break;
+  }
+  // As long as it takes to get there (for a body with a heading, to turn round first), twice
+  // over: a neighbour in the way may hold it up.
+  double time = length / config_.max_speed;
+  if (kinematics_) {
+    const KinematicLimits& l = kinematics_->limits();
+    time = travel(std::numbers::pi, 0.0, l.turn_rate, l.angular_acceleration, INFINITY).time +
+           travel(length, 0.0, l.speed, l.acceleration, INFINITY).time;
+  }
+  r.give_way = std::max(2.0 * time, config_.loop2_period.seconds());
   r.status = PlanStatus::moving;
   r.stable = false;
   ++give_ways_;
@@ -437,26 +487,11 @@ void CoverageController::start_giving_way(Robot& r, Vec2 from) {
 
 void CoverageController::give_way(Robot& r) {
   const double dt = config_.loop2_period.seconds();
-  const Environment& space = free_space(r.id);
-  // To its own right as it faces the robot it makes room for (the side ORCA's bias passes
-  // on), else back and right, straight back, back and left, or left: the first the walls
-  // allow.
-  const Vec2 away = r.position - r.give_way_from;
-  const Vec2 unit = away / norm(away);
-  Vec2 to = r.position;
-  for (const double turn : {std::numbers::pi / 2, std::numbers::pi / 4, 0.0, -std::numbers::pi / 4,
-                            -std::numbers::pi / 2}) {
-    const double c = std::cos(turn), s = std::sin(turn);
-    const Vec2 d{c * unit.x - s * unit.y, s * unit.x + c * unit.y};
-    const Vec2 q = r.position + dt * avoiding_velocity(r, config_.max_speed * d, config_.max_speed);
-    if (space.segment_inside(r.position, q)) {
-      to = q;
-      break;
-    }
-  }
+  const Vec2 to = r.give_way_to;
   const double g = clear_fraction(r, to);
-  move_to(r, g < 1.0 ? r.position + g * (to - r.position) : to);
-  r.give_way = std::max(0.0, r.give_way - dt);
+  const Vec2 at = drive(r, g < 1.0 ? r.position + g * (to - r.position) : to);
+  move_to(r, at);
+  r.give_way = at == to ? 0.0 : std::max(0.0, r.give_way - dt);
   if (r.deadlocked) deadlock_time_ += dt;
   if (r.give_way == 0.0) {
     // Back to its goal, with its planner started afresh from here.

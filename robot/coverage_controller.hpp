@@ -115,6 +115,10 @@ class CoverageController {
   std::uint64_t deadlocks_resolved() const { return deadlocks_resolved_; }
   // Times a robot stepped aside to let another by.
   std::uint64_t give_ways() const { return give_ways_; }
+  // With kinematics: robot-seconds spent turning in place, and stops harder than the
+  // acceleration limit (a detour moved the point a body was driving to).
+  double turn_time() const { return turn_time_; }
+  std::uint64_t hard_stops() const { return hard_stops_; }
   const CellIntegrator& integrator() const { return integrator_; }
   const CoverageLaw& law() const { return *law_; }
   CoverageLaw& law() { return *law_; }
@@ -158,8 +162,13 @@ class CoverageController {
   void move_to(Robot& r, Vec2 next);
   // The robot is at its planner's step, which ended with this status; false: the run stops.
   bool arrive(Kernel& k, Robot& r, PlanStatus status);
-  // A motion step toward r's waypoint with collision avoidance; false: the run stops.
+  // A motion step toward r's waypoint (with collision avoidance or kinematics); false: the
+  // run stops.
   bool follow_waypoint(Kernel& k, Robot& r);
+  bool arrive_at_waypoint(Kernel& k, Robot& r);
+  // The body's motion toward `to` in one motion step (at once without kinematics): where it
+  // gets to.
+  Vec2 drive(Robot& r, Vec2 to);
   // What robot r senses of its neighbours, into neighbors_.
   void sense_neighbors(const Robot& r);
   // The avoidance's velocity for robot r from what it senses; throws for one that is not
@@ -169,7 +178,7 @@ class CoverageController {
   // larger id, or a settled robot on the waypoint) gives way.
   void resolve(Robot& r);
   void start_giving_way(Robot& r, Vec2 from);
-  // A motion step away from the robot it makes room for; at the end it returns to its goal.
+  // A motion step aside for the robot it makes room for; then it returns to its goal.
   void give_way(Robot& r);
   // The largest fraction of the straight motion from r's position to `to` that brings its
   // body no nearer to another's than touching (or than it already is).
@@ -182,6 +191,9 @@ class CoverageController {
   double body_gap_min_ = NAN, contact_time_ = 0.0;
   std::uint64_t wall_contacts_ = 0;
   std::unique_ptr<CollisionAvoidance> avoidance_;  // unset: none
+  std::unique_ptr<Kinematics> kinematics_;         // unset: the single integrator
+  double turn_time_ = 0.0;
+  std::uint64_t hard_stops_ = 0;
   std::vector<SensedNeighbor> neighbors_;
   std::uint64_t deadlocks_ = 0, deadlocks_resolved_ = 0, give_ways_ = 0;
   double deadlock_time_ = 0.0;

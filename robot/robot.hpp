@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "planners/planner.hpp"
+#include "robot/kinematics.hpp"
 
 namespace covsim {
 
@@ -34,9 +35,13 @@ struct Robot {
   Vec2 velocity;
   double blocked_time = 0.0;
   bool deadlocked = false;
-  // Stepping aside for another robot for this many more seconds, away from this point.
+  // Its body's heading and speeds (kinematics other than the single integrator), and the
+  // point it is driving toward.
+  BodyState body;
+  Vec2 driving_to;
+  // Stepping aside for another robot, to this point, for at most this many more seconds.
   double give_way = 0.0;
-  Vec2 give_way_from;
+  Vec2 give_way_to;
   double path_length = 0.0;
   std::unique_ptr<Planner> planner;
 };

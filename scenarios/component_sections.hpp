@@ -16,6 +16,7 @@
 #include "planners/planner_registry.hpp"
 #include "robot/collision_avoidance_registry.hpp"
 #include "robot/coverage_law_registry.hpp"
+#include "robot/kinematics_registry.hpp"
 
 namespace covsim {
 
@@ -49,7 +50,10 @@ inline const auto& component_sections() {
                                      density_registry},
       ComponentSection<AvoidanceEntry>{"avoidance", "robots.avoidance", "type",
                                        AvoidanceConfig{}.type, R"({"type": "none"})",
-                                       collision_avoidance_registry}};
+                                       collision_avoidance_registry},
+      ComponentSection<KinematicsEntry>{"kinematics", "robots.kinematics", "type",
+                                        KinematicsConfig{}.type, R"({"type": "single_integrator"})",
+                                        kinematics_registry}};
   return sections;
 }
 

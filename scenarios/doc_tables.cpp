@@ -6,6 +6,7 @@
 
 #include "net/channel_registry.hpp"
 #include "robot/collision_avoidance_registry.hpp"
+#include "robot/kinematics_registry.hpp"
 #include "scenarios/scenario_sections.hpp"
 
 namespace covsim {
@@ -39,6 +40,11 @@ std::vector<DocTable> scenario_doc_tables() {
   // And a collision avoidance's in robots.avoidance (orca's horizon).
   for (const AvoidanceEntry& e : collision_avoidance_registry().entries()) {
     if (!e.params.empty()) out.push_back({"robots.avoidance." + e.name, markdown_table(e.params)});
+  }
+  // And a kinematics' in robots.kinematics (a differential drive's wheel base).
+  for (const KinematicsEntry& e : kinematics_registry().entries()) {
+    if (!e.params.empty())
+      out.push_back({"robots.kinematics." + e.name, markdown_table(e.params)});
   }
   return out;
 }

@@ -144,6 +144,10 @@ void read_components(const JsonValue& root, CoverageConfig& c) {
             "{} avoids bodies, and robots.radius is 0 (points): give the robots a radius",
             c.avoidance.type));
     }
+    if (auto kin = r->find("kinematics")) {
+      const ComponentChoice choice = read_component(*kin, component_section<KinematicsEntry>());
+      c.kinematics = KinematicsConfig{choice.type, choice.params};
+    }
   }
   if (auto k = root.find("controller")) {
     // The section's own keys (the projection policy) are read with the fixed sections.

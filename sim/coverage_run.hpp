@@ -67,6 +67,9 @@ struct CoverageOutcome {
   // Collision avoidance (CoverageController::deadlocks and the rest): zeros without it.
   std::uint64_t deadlocks = 0, deadlocks_resolved = 0;
   double deadlock_time = 0.0;
+  // Kinematics (CoverageController::turn_time, hard_stops): zeros for the single integrator.
+  double turn_time = 0.0;
+  std::uint64_t hard_stops = 0;
   // Wall-clock seconds spent in planner steps, and how many steps: the only measures besides
   // wall times that vary between runs.
   double planner_seconds = 0.0;

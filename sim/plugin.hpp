@@ -33,6 +33,7 @@ struct Registries {
   Registry<ChannelEntry>& channels;
   Registry<DensityEntry>& densities;
   Registry<AvoidanceEntry>& avoidance;
+  Registry<KinematicsEntry>& kinematics;
 };
 
 inline Registries registries() {

@@ -182,6 +182,8 @@ CoverageOutcome Simulation::outcome() const {
   out.deadlocks = c.deadlocks();
   out.deadlock_time = c.deadlock_time();
   out.deadlocks_resolved = c.deadlocks_resolved();
+  out.turn_time = c.turn_time();
+  out.hard_stops = c.hard_stops();
   out.planner_seconds = planner_totals_.seconds;
   out.planner_steps = planner_totals_.steps;
   return out;

@@ -342,6 +342,16 @@ const std::vector<Measure>& measures() {
              "deadlocks that ended, the robot reaching a planner step again, before the run did",
              &O::deadlocks_resolved)
           .later(),
+      member("bodies.turn_time", K::number, "s",
+             "robot-seconds spent turning in place (kinematics with a heading)", &O::turn_time)
+          .in_runs(38)
+          .in_summary()
+          .later(),
+      member("bodies.hard_stops", K::integer, "",
+             "stops harder than the acceleration limit: a detour moved the point a body was "
+             "driving to",
+             &O::hard_stops)
+          .later(),
       member("planner.steps", K::integer, "", "planner steps taken", &O::planner_steps),
       outcome(
           "planner.step_time_us", K::number, "µs",
