@@ -55,6 +55,10 @@ void TraceWriter::commit() {
 }
 
 TraceReader::TraceReader(std::filesystem::path path) : path_(std::move(path)), in_(path_) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path_, ec))
+    throw TraceFormatError(path_.string() +
+                           ": is a directory, not a trace (covsim run --trace FILE writes one)");
   if (!in_) throw TraceFormatError(path_.string() + ": cannot open trace");
   std::string line;
   auto next_line = [&]() -> bool {

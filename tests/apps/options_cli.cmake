@@ -116,6 +116,8 @@ run_ok(same replay ${WORK}/t.trace)
 if(same_err MATCHES "different build")
   message(FATAL_ERROR "a trace of this build warned: ${same_err}")
 endif()
+# A run's folder is not its trace: said so, exit 2.
+bad("replay of a run folder" "t: is a directory, not a trace" replay ${WORK}/t)
 
 # `list planners --reads-range`: the planners a sensor-range study varies (the registry's
 # flag), and only for planners.
