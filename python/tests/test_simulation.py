@@ -32,6 +32,24 @@ def test_bodies_from_python_have_the_cli_fingerprint_and_measures(scenarios, cli
         covsim.Scenario.from_file(scenarios / "u_shape.json").set("robots.radius", 0.05)
 
 
+def test_avoidance_and_kinematics_from_python_match_the_cli(scenarios, cli, tmp_path):
+    s = (covsim.Scenario.from_file(scenarios / "u_shape.json").set("robots.radius", 0.02)
+         .set("robots.avoidance", {"type": "orca"})
+         .set("robots.kinematics", {"type": "differential_drive", "wheel_base": 0.053}))
+    out = covsim.Simulation(s).run()
+    cli("run", scenarios / "u_shape.json", "--set", "robots.radius=0.02",
+        "--set", "robots.avoidance.type=orca", "--set", "robots.kinematics.type=differential_drive",
+        "--out", tmp_path / "run")
+    final = json.loads((tmp_path / "run" / "final.json").read_text())
+    assert out["fingerprint"] == final["fingerprint"]
+    assert out["bodies"] == final["bodies"]
+    assert out["converged"] and out["bodies"]["contact_time"] == 0.0
+    assert out["bodies"]["turn_time"] > 0.0
+    with pytest.raises(covsim.ScenarioError, match=r"robots\.avoidance.*radius"):
+        covsim.Scenario.from_file(scenarios / "u_shape.json").set(
+            "robots.avoidance", {"type": "orca"})
+
+
 def test_stepping_equals_a_whole_run(scenarios):
     s = covsim.Scenario.from_file(scenarios / "two_obstacles.json")
     s.set("network.loss", {"model": "bernoulli", "p": 0.2})
