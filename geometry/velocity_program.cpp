@@ -13,9 +13,9 @@ constexpr double kParallel = 1e-12;
 // The best point of plane k's boundary line inside the disk and the planes before k: nearest
 // to `target`, or furthest along it when `along` (then target is a direction). False when the
 // line has no such point.
-bool best_on_line(const std::vector<HalfPlane>& planes, std::size_t k, double radius, Vec2 target,
+bool best_on_line(const std::vector<VelocityConstraint>& planes, std::size_t k, double radius, Vec2 target,
                   bool along, Vec2& out) {
-  const HalfPlane& h = planes[k];
+  const VelocityConstraint& h = planes[k];
   // The line p + t d meets the disk |v| <= radius for t in [lo, hi].
   const double b = dot(h.point, h.direction);
   const double disc = b * b + radius * radius - norm2(h.point);
@@ -23,7 +23,7 @@ bool best_on_line(const std::vector<HalfPlane>& planes, std::size_t k, double ra
   const double root = std::sqrt(disc);
   double lo = -b - root, hi = -b + root;
   for (std::size_t j = 0; j < k; ++j) {
-    const HalfPlane& g = planes[j];
+    const VelocityConstraint& g = planes[j];
     const double denom = cross(g.direction, h.direction);
     const double num = cross(g.direction, h.point - g.point);
     if (std::fabs(denom) <= kParallel) {
@@ -48,7 +48,7 @@ bool best_on_line(const std::vector<HalfPlane>& planes, std::size_t k, double ra
 
 // The planes' first k constraints in the disk: returns the count satisfied in order (all of
 // them when it equals planes.size()), `out` the optimum of those.
-std::size_t solve(const std::vector<HalfPlane>& planes, double radius, Vec2 target, bool along,
+std::size_t solve(const std::vector<VelocityConstraint>& planes, double radius, Vec2 target, bool along,
                   Vec2& out) {
   if (along) {
     out = radius * target;
@@ -70,7 +70,7 @@ std::size_t solve(const std::vector<HalfPlane>& planes, double radius, Vec2 targ
 
 }  // namespace
 
-VelocityChoice closest_permitted_velocity(const std::vector<HalfPlane>& planes, double max_speed,
+VelocityChoice closest_permitted_velocity(const std::vector<VelocityConstraint>& planes, double max_speed,
                                           Vec2 preferred) {
   VelocityChoice c;
   const std::size_t done = solve(planes, max_speed, preferred, false, c.velocity);
@@ -81,12 +81,12 @@ VelocityChoice closest_permitted_velocity(const std::vector<HalfPlane>& planes, 
   c.feasible = false;
   double worst = 0.0;
   for (std::size_t k = done; k < planes.size(); ++k) {
-    const HalfPlane& h = planes[k];
+    const VelocityConstraint& h = planes[k];
     if (cross(h.direction, h.point - c.velocity) <= worst) continue;
-    std::vector<HalfPlane> bisectors;
+    std::vector<VelocityConstraint> bisectors;
     for (std::size_t j = 0; j < k; ++j) {
-      const HalfPlane& g = planes[j];
-      HalfPlane b;
+      const VelocityConstraint& g = planes[j];
+      VelocityConstraint b;
       const double denom = cross(h.direction, g.direction);
       if (std::fabs(denom) <= kParallel) {
         if (dot(h.direction, g.direction) > 0.0) continue;  // the same side: nothing new

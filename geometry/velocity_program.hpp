@@ -11,7 +11,7 @@
 namespace covsim {
 
 // The velocities v with cross(direction, v - point) >= 0: the left of the directed line.
-struct HalfPlane {
+struct VelocityConstraint {
   Vec2 point;
   Vec2 direction;  // unit length
 };
@@ -21,7 +21,7 @@ struct VelocityChoice {
   bool feasible = true;  // false: the least worst violation was chosen
 };
 
-VelocityChoice closest_permitted_velocity(const std::vector<HalfPlane>& planes, double max_speed,
+VelocityChoice closest_permitted_velocity(const std::vector<VelocityConstraint>& planes, double max_speed,
                                           Vec2 preferred);
 
 }  // namespace covsim

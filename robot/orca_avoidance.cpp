@@ -11,7 +11,7 @@ namespace {
 // The half-plane of the robot's velocities that avoids neighbour n (van den Berg et al.,
 // Section 5.1): u is the least change of the relative velocity that leaves the truncated
 // velocity obstacle, the robot taking `share` of it.
-HalfPlane orca_plane(const AvoidanceQuery& q, const SensedNeighbor& n, double horizon,
+VelocityConstraint orca_plane(const AvoidanceQuery& q, const SensedNeighbor& n, double horizon,
                      double share) {
   const Vec2 rel_pos = n.position - q.position;
   const Vec2 rel_vel = q.velocity - n.velocity;
@@ -51,7 +51,7 @@ HalfPlane orca_plane(const AvoidanceQuery& q, const SensedNeighbor& n, double ho
     direction = {unit.y, -unit.x};
     u = (reach / q.step_time - wn) * unit;
   }
-  return HalfPlane{q.velocity + share * u, direction};
+  return VelocityConstraint{q.velocity + share * u, direction};
 }
 
 bool standing(const SensedNeighbor& n) {
@@ -61,14 +61,14 @@ bool standing(const SensedNeighbor& n) {
 }  // namespace
 
 Vec2 OrcaAvoidance::velocity(const AvoidanceQuery& q) {
-  std::vector<HalfPlane> planes;
+  std::vector<VelocityConstraint> planes;
   planes.reserve(q.neighbors.size());
   for (const SensedNeighbor& n : q.neighbors) {
     if (n.position == q.position) continue;  // no direction to avoid it in
     planes.push_back(orca_plane(q, n, horizon_, standing(n) ? 1.0 : 0.5));
   }
   bool free = norm(q.preferred) <= q.max_speed;
-  for (const HalfPlane& h : planes)
+  for (const VelocityConstraint& h : planes)
     free = free && cross(h.direction, q.preferred - h.point) >= 0.0;
   if (free) return q.preferred;
   const double c = std::cos(bias_), s = std::sin(bias_);

@@ -187,6 +187,8 @@ def median_iqr(row, measure, fmt):
     modes (docs/sweeps.md), each mode's share and median. "–" where there is no sample."""
     if _missing(row[f"{measure}_median"]):
         return "–"
+    if row[f"{measure}_q1"] == row[f"{measure}_q3"] == row[f"{measure}_median"]:
+        return fmt % row[f"{measure}_median"]  # one run, or all alike: no spread to give
     text = (f"{fmt % row[f'{measure}_median']} [{fmt % row[f'{measure}_q1']}, "
             f"{fmt % row[f'{measure}_q3']}]")
     if row[f"{measure}_modes"] == 2:
@@ -200,6 +202,8 @@ def mean_ci(row, measure, fmt):
     """Mean ± the half-width of its 95% confidence interval."""
     if _missing(row[f"{measure}_mean"]):
         return "–"
+    if _missing(row[f"{measure}_ci95"]):
+        return fmt % row[f"{measure}_mean"]  # one run: no interval
     return f"{fmt % row[f'{measure}_mean']} ± {fmt % row[f'{measure}_ci95']}"
 
 

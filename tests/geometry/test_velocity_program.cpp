@@ -11,14 +11,14 @@ using namespace covsim;
 namespace {
 
 // The velocities with x >= a (the left of a line heading down).
-HalfPlane at_least_x(double a) {
-  return HalfPlane{{a, 0.0}, {0.0, -1.0}};
+VelocityConstraint at_least_x(double a) {
+  return VelocityConstraint{{a, 0.0}, {0.0, -1.0}};
 }
-HalfPlane at_most_x(double a) {
-  return HalfPlane{{a, 0.0}, {0.0, 1.0}};
+VelocityConstraint at_most_x(double a) {
+  return VelocityConstraint{{a, 0.0}, {0.0, 1.0}};
 }
-HalfPlane at_least_y(double a) {
-  return HalfPlane{{0.0, a}, {1.0, 0.0}};
+VelocityConstraint at_least_y(double a) {
+  return VelocityConstraint{{0.0, a}, {1.0, 0.0}};
 }
 
 }  // namespace
@@ -82,7 +82,7 @@ TEST_CASE("random programs: feasible answers satisfy every plane and beat nearby
   };
   int feasible = 0;
   for (int trial = 0; trial < 500; ++trial) {
-    std::vector<HalfPlane> planes;
+    std::vector<VelocityConstraint> planes;
     const int n = 1 + static_cast<int>(uniform() * 5);
     for (int k = 0; k < n; ++k) {
       const double a = 2 * M_PI * uniform();
@@ -94,7 +94,7 @@ TEST_CASE("random programs: feasible answers satisfy every plane and beat nearby
     ++feasible;
     const auto permitted = [&](Vec2 v) {
       if (norm(v) > 1.0 + 1e-9) return false;
-      for (const HalfPlane& h : planes)
+      for (const VelocityConstraint& h : planes)
         if (cross(h.direction, v - h.point) < -1e-9) return false;
       return true;
     };
