@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "net/receiver_grid.hpp"
 #include "planners/planner_registry.hpp"
 #include "robot/collision_avoidance_registry.hpp"
 #include "robot/component_error.hpp"
@@ -70,6 +71,14 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   if (config_.radius > 0.0 && config_.avoidance.type != AvoidanceConfig{}.type)
     avoidance_ = make_collision_avoidance(config_.avoidance);
   kinematics_ = make_kinematics(config_.kinematics, KinematicsContext{config_.max_speed});
+  if (avoidance_) {
+    // The robots near one, for sensing and for the clearance of a motion, without testing
+    // every robot.
+    near_range_ = std::max(
+        avoidance_->range(config_.radius, config_.max_speed, config_.loop2_period.seconds()),
+        2.0 * config_.radius + step_);
+    near_ = std::make_unique<ReceiverGrid>(near_range_, starts);
+  }
   loop1_kind_ = kernel_.add_kind("loop1", [this](Kernel&, const Event& ev) { loop1(ev.entity); });
   loop2_kind_ =
       kernel_.add_kind("loop2", [this](Kernel& k, const Event& ev) { loop2(k, ev.entity); });
@@ -300,6 +309,7 @@ PlanStep CoverageController::planner_step(const Kernel& k, Robot& r) {
 void CoverageController::move_to(Robot& r, Vec2 next) {
   r.path_length += distance(r.position, next);
   r.position = next;
+  if (near_) near_->moved(r.id, next);
   state_->move(Generators::positions, r.id, next);
   view_->moved(r.id);
 }
@@ -322,17 +332,30 @@ bool CoverageController::arrive(Kernel& k, Robot& r, PlanStatus status) {
   return true;
 }
 
+template <class F>
+void CoverageController::for_each_near(Vec2 p, double radius, F&& f) const {
+  // In increasing index either way: the same order as a loop over every robot.
+  if (!near_ || radius > near_range_) {
+    for (const Robot& o : robots_)
+      f(o);
+    return;
+  }
+  near_->candidates(p, near_ids_);
+  for (const std::uint32_t j : near_ids_)
+    f(robots_[j]);
+}
+
 void CoverageController::sense_neighbors(const Robot& r) {
   // Those within the avoidance's range and in sight.
   const double range =
       avoidance_->range(config_.radius, config_.max_speed, config_.loop2_period.seconds());
   neighbors_.clear();
-  for (const Robot& o : robots_) {
+  for_each_near(r.position, range, [&](const Robot& o) {
     if (o.id == r.id || !within(o.position, r.position, range) ||
         !env_.segment_inside(r.position, o.position))
-      continue;
+      return;
     neighbors_.push_back(SensedNeighbor{o.position, o.velocity});
-  }
+  });
 }
 
 bool CoverageController::arrive_at_waypoint(Kernel& k, Robot& r) {
@@ -507,19 +530,19 @@ double CoverageController::clear_fraction(const Robot& r, Vec2 to) const {
   if (a == 0.0) return 1.0;
   const double reach = 2.0 * config_.radius;
   double g = 1.0;
-  for (const Robot& o : robots_) {
-    if (o.id == r.id || !within(o.position, r.position, reach + std::sqrt(a))) continue;
+  for_each_near(r.position, reach + std::sqrt(a), [&](const Robot& o) {
+    if (o.id == r.id || !within(o.position, r.position, reach + std::sqrt(a))) return;
     // The first point of the motion nearer to o than touching (or than it already is).
     const Vec2 e = r.position - o.position;
     const double b = 2.0 * dot(e, d);
-    if (b >= 0.0) continue;  // moving away from o
+    if (b >= 0.0) return;  // moving away from o
     const double least = std::min(reach, norm(e));
     const double c = norm2(e) - least * least;
     const double disc = b * b - 4.0 * a * c;
-    if (disc < 0.0) continue;
+    if (disc < 0.0) return;
     const double s = (-b - std::sqrt(disc)) / (2.0 * a);
     g = std::min(g, std::max(0.0, s));
-  }
+  });
   return g;
 }
 

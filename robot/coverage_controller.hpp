@@ -50,6 +50,7 @@
 namespace covsim {
 
 class CoverageController;
+class ReceiverGrid;
 
 // What stopped a run at once, and where: a robot, the time, its goal and its position.
 struct RobotIncident {
@@ -169,6 +170,9 @@ class CoverageController {
   // The body's motion toward `to` in one motion step (at once without kinematics): where it
   // gets to.
   Vec2 drive(Robot& r, Vec2 to);
+  // Calls f with every robot that may lie within radius of p (a superset), in index order.
+  template <class F>
+  void for_each_near(Vec2 p, double radius, F&& f) const;
   // What robot r senses of its neighbours, into neighbors_.
   void sense_neighbors(const Robot& r);
   // The avoidance's velocity for robot r from what it senses; throws for one that is not
@@ -195,6 +199,9 @@ class CoverageController {
   double turn_time_ = 0.0;
   std::uint64_t hard_stops_ = 0;
   std::vector<SensedNeighbor> neighbors_;
+  std::unique_ptr<ReceiverGrid> near_;  // with avoidance: the robots near a point
+  double near_range_ = 0.0;
+  mutable std::vector<std::uint32_t> near_ids_;
   std::uint64_t deadlocks_ = 0, deadlocks_resolved_ = 0, give_ways_ = 0;
   double deadlock_time_ = 0.0;
   CellIntegrator integrator_;

@@ -1,6 +1,7 @@
 #pragma once
 // What the controller tests share: the paper's scenario files, and an observer that checks
 // every motion step against Ω.
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
@@ -12,6 +13,11 @@ namespace covsim::test {
 
 inline Scenario paper(const std::string& name) {
   return load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/" + name);
+}
+
+// A scenario given as JSON, its files looked up beside the shipped scenarios.
+inline Scenario parse_beside_paper(const nlohmann::json& j, const std::string& name) {
+  return parse_scenario(j, name, std::filesystem::path(COVSIM_SOURCE_DIR) / "scenarios");
 }
 
 // Counts motion steps and those that leave Ω, and keeps the largest gap between a robot

@@ -15,15 +15,12 @@
 using namespace covsim;
 using Catch::Matchers::Contains;
 using covsim::test::paper;
+using covsim::test::parse_beside_paper;
 
 namespace {
 
 nlohmann::json scenario_json(const std::string& name) {
   return paper(name).json;
-}
-
-Scenario parse(const nlohmann::json& j, const std::string& name) {
-  return parse_scenario(j, name, std::filesystem::path(COVSIM_SOURCE_DIR) / "scenarios");
 }
 
 // Keeps the least distance from a robot's centre to ∂Ω over every motion step.
@@ -54,7 +51,7 @@ TEST_CASE("bodies keep their radius from every wall and converge", "[bodies]") {
     INFO(name);
     nlohmann::json j = scenario_json(name);
     j["robots"]["radius"] = radius;
-    const Scenario s = parse(j, name);
+    const Scenario s = parse_beside_paper(j, name);
     Clearance clearance(s);
     const CoverageOutcome out = run_coverage(s, &clearance);
     CHECK(out.stop_reason == "converged");
@@ -83,7 +80,7 @@ TEST_CASE("a target beyond a passage too narrow for the body projects onto the r
                             {"density", {{"type", "uniform"}}},
                             {"robots", {{"positions", {{0.3, 0.5}, {0.6, 0.5}}}, {"radius", 0.1}}},
                             {"seed", 1}};
-  const Scenario s = parse(j, "two rooms");
+  const Scenario s = parse_beside_paper(j, "two rooms");
   const ConfigurationSpace space(*s.environment, 0.1);
   REQUIRE(space.part_count() == 2);
   Clearance clearance(s);
@@ -107,14 +104,15 @@ TEST_CASE("a target beyond a passage too narrow for the body projects onto the r
 TEST_CASE("a body that overlaps a wall or another body at the start is refused", "[bodies]") {
   nlohmann::json j = scenario_json("u_shape.json");
   j["robots"]["radius"] = 0.05;  // robots 0.05 m apart in the file
-  CHECK_THROWS_WITH(parse(j, "u_shape"), Contains("positions[1]") && Contains("overlap"));
-  CHECK_THROWS_WITH(parse(two_robots(0.1, 0.05, 0.5), "walls"),
-                    Contains("positions[0]") && Contains("from a wall"));
-  CHECK_THROWS_WITH(parse(two_robots(0.1, 0.45, 0.54), "bodies"),
+  CHECK_THROWS_WITH(parse_beside_paper(j, "u_shape"),
                     Contains("positions[1]") && Contains("overlap"));
-  CHECK_NOTHROW(parse(two_robots(0.05, 0.45, 0.55), "touching"));
+  CHECK_THROWS_WITH(parse_beside_paper(two_robots(0.1, 0.05, 0.5), "walls"),
+                    Contains("positions[0]") && Contains("from a wall"));
+  CHECK_THROWS_WITH(parse_beside_paper(two_robots(0.1, 0.45, 0.54), "bodies"),
+                    Contains("positions[1]") && Contains("overlap"));
+  CHECK_NOTHROW(parse_beside_paper(two_robots(0.05, 0.45, 0.55), "touching"));
   j["robots"]["radius"] = 0.6;  // u_shape is 1 m across
-  CHECK_THROWS_WITH(parse(j, "u_shape"), Contains("fits nowhere"));
+  CHECK_THROWS_WITH(parse_beside_paper(j, "u_shape"), Contains("fits nowhere"));
 }
 
 TEST_CASE("robots drawn with bodies fit the shrunk space and do not overlap", "[bodies]") {
@@ -122,7 +120,7 @@ TEST_CASE("robots drawn with bodies fit the shrunk space and do not overlap", "[
   j["robots"] = {{"count", 40},
                  {"start", {{"region", {{0.3, 4.0}, {3.2, 4.0}, {3.2, 6.0}, {0.3, 6.0}}}}},
                  {"radius", 0.12}};
-  const Scenario s = parse(j, "office");
+  const Scenario s = parse_beside_paper(j, "office");
   const ConfigurationSpace space(*s.environment, 0.12);
   REQUIRE(s.robot_positions.size() == 40);
   for (std::size_t a = 0; a < s.robot_positions.size(); ++a) {
@@ -135,12 +133,13 @@ TEST_CASE("robots drawn with bodies fit the shrunk space and do not overlap", "[
 TEST_CASE("the least gap and the contact time measure the bodies", "[bodies]") {
   // Apart by twice the radius (touching), the robots step 0.01 m apart each toward the
   // centroids of their halves: the least gap is at the first step, 0.02 m.
-  const CoverageOutcome apart = run_coverage(parse(two_robots(0.05, 0.45, 0.55), "apart"));
+  const CoverageOutcome apart =
+      run_coverage(parse_beside_paper(two_robots(0.05, 0.45, 0.55), "apart"));
   CHECK(apart.body_gap_min == Approx(0.02).margin(1e-12));
   CHECK(apart.contact_time == 0.0);
   // Overlapping by 0.04 m (set past the loader, as a program may): still overlapping after
   // the first step (0.08 m apart), touching after the second.
-  Scenario s = parse(two_robots(0.05, 0.45, 0.55), "overlapping");
+  Scenario s = parse_beside_paper(two_robots(0.05, 0.45, 0.55), "overlapping");
   s.robot_positions = {{0.47, 0.5}, {0.53, 0.5}};
   const CoverageOutcome overlapping = run_coverage(s);
   CHECK(overlapping.body_gap_min == Approx(-0.02).margin(1e-12));

@@ -16,12 +16,9 @@
 using namespace covsim;
 using Catch::Matchers::Contains;
 using covsim::test::paper;
+using covsim::test::parse_beside_paper;
 
 namespace {
-
-Scenario parse(const nlohmann::json& j, const std::string& name) {
-  return parse_scenario(j, name, std::filesystem::path(COVSIM_SOURCE_DIR) / "scenarios");
-}
 
 // The least distance between two robots' centres and from a centre to ∂Ω, over every
 // motion of every robot.
@@ -59,7 +56,7 @@ struct CorridorRun {
   Simulation sim;
   Distances d;
   CorridorRun(double width, Vec2 target0, Vec2 target1)
-      : sim(parse(corridor(0.1, width), "corridor")), d(sim.scenario()) {
+      : sim(parse_beside_paper(corridor(0.1, width), "corridor")), d(sim.scenario()) {
     sim.set_target(0, target0);
     sim.set_target(1, target1);
     sim.add_observer(&d);
@@ -75,7 +72,7 @@ TEST_CASE("with ORCA no two bodies overlap and the runs converge", "[avoidance]"
     nlohmann::json j = paper(name).json;
     j["robots"]["radius"] = radius;
     j["robots"]["avoidance"] = {{"type", "orca"}};
-    const Scenario s = parse(j, name);
+    const Scenario s = parse_beside_paper(j, name);
     Distances d(s);
     const CoverageOutcome out = run_coverage(s, &d);
     CHECK(out.stop_reason == "converged");
@@ -92,7 +89,7 @@ TEST_CASE("with ORCA no two bodies overlap and the runs converge", "[avoidance]"
 TEST_CASE("without avoidance the same bodies overlap", "[avoidance]") {
   nlohmann::json j = paper("u_shape.json").json;
   j["robots"]["radius"] = 0.02;
-  const CoverageOutcome out = run_coverage(parse(j, "u_shape"));
+  const CoverageOutcome out = run_coverage(parse_beside_paper(j, "u_shape"));
   CHECK(out.contact_time > 0.0);
   CHECK(out.body_gap_min < 0.0);
   CHECK(out.deadlocks == 0);
@@ -145,21 +142,23 @@ TEST_CASE("robots that cannot pass each other are counted as deadlocked", "[avoi
 TEST_CASE("avoidance needs bodies, and a known type", "[avoidance]") {
   nlohmann::json j = paper("u_shape.json").json;
   j["robots"]["avoidance"] = {{"type", "orca"}};
-  CHECK_THROWS_WITH(parse(j, "u_shape"), Contains("$.robots.avoidance") && Contains("radius"));
+  CHECK_THROWS_WITH(parse_beside_paper(j, "u_shape"),
+                    Contains("$.robots.avoidance") && Contains("radius"));
   j["robots"]["radius"] = 0.02;
   j["robots"]["avoidance"] = {{"type", "rvo"}};
-  CHECK_THROWS_WITH(parse(j, "u_shape"), Contains("$.robots.avoidance") && Contains("orca"));
+  CHECK_THROWS_WITH(parse_beside_paper(j, "u_shape"),
+                    Contains("$.robots.avoidance") && Contains("orca"));
   j["robots"]["avoidance"] = {{"type", "orca"}, {"time_horizon", -1}};
-  CHECK_THROWS_WITH(parse(j, "u_shape"), Contains("time_horizon"));
+  CHECK_THROWS_WITH(parse_beside_paper(j, "u_shape"), Contains("time_horizon"));
   j["robots"]["avoidance"] = {{"type", "orca"}, {"horizon", 1}};
-  CHECK_THROWS_WITH(parse(j, "u_shape"), Contains("horizon"));
+  CHECK_THROWS_WITH(parse_beside_paper(j, "u_shape"), Contains("horizon"));
 }
 
 TEST_CASE("the scenario's description names the avoidance with every parameter", "[avoidance]") {
   nlohmann::json j = paper("u_shape.json").json;
   j["robots"]["radius"] = 0.02;
   j["robots"]["avoidance"] = {{"type", "orca"}};
-  const auto out = describe_scenario(parse(j, "u_shape"));
+  const auto out = describe_scenario(parse_beside_paper(j, "u_shape"));
   CHECK(out["robots"]["avoidance"]["type"] == "orca");
   CHECK(out["robots"]["avoidance"]["time_horizon"] == 2.0);
   CHECK(out["robots"]["avoidance"]["bias"] == 0.1);

@@ -18,14 +18,10 @@ using covsim::test::paper;
 
 namespace {
 
-Scenario parse(const nlohmann::json& j) {
-  return parse_scenario(j, "u_shape", std::filesystem::path(COVSIM_SOURCE_DIR) / "scenarios");
-}
-
 Scenario u_shape_with(const nlohmann::json& kinematics) {
   nlohmann::json j = paper("u_shape.json").json;
   j["robots"]["kinematics"] = kinematics;
-  return parse(j);
+  return covsim::test::parse_beside_paper(j, "u_shape");
 }
 
 // Checks every motion step of every robot against the limits.
