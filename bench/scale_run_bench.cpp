@@ -7,7 +7,7 @@
 // figure to compare: CPU seconds per simulated second, which for these single-threaded runs
 // is the wall time on an idle core and, unlike wall time, holds still on a shared machine.
 // Decentralized runs also count `messages_per_robot_s`, the messages a robot reads per
-// simulated second. BM_ScaleRunAvoidance gives the robots bodies and ORCA.
+// simulated second. BM_ScaleRunBodies gives the robots bodies, BM_ScaleRunAvoidance ORCA too.
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
@@ -69,11 +69,21 @@ void BM_ScaleRunDecentralized(benchmark::State& state) {
   run(state, parse(json));
 }
 
-// Bodies of 2 cm with ORCA between them (robots.avoidance): what sensing the neighbours,
-// the velocity program and the clearance of each motion add to BM_ScaleRun.
-void BM_ScaleRunAvoidance(benchmark::State& state) {
-  nlohmann::ordered_json json = scale_json(static_cast<std::size_t>(state.range(0)));
+// Bodies of 2 cm (robots.radius: the configuration space, the body measures), and the same
+// with ORCA between them (robots.avoidance): what sensing the neighbours, the velocity
+// program and the clearance of each motion add to BM_ScaleRunBodies.
+nlohmann::ordered_json with_bodies(std::size_t n) {
+  nlohmann::ordered_json json = scale_json(n);
   json["robots"]["radius"] = 0.02;
+  return json;
+}
+
+void BM_ScaleRunBodies(benchmark::State& state) {
+  run(state, parse(with_bodies(static_cast<std::size_t>(state.range(0)))));
+}
+
+void BM_ScaleRunAvoidance(benchmark::State& state) {
+  nlohmann::ordered_json json = with_bodies(static_cast<std::size_t>(state.range(0)));
   json["robots"]["avoidance"] = {{"type", "orca"}};
   run(state, parse(json));
 }
@@ -96,5 +106,6 @@ void BM_DelaunayPerTick(benchmark::State& state) {
 
 BENCHMARK(BM_ScaleRun)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunDecentralized)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScaleRunBodies)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunAvoidance)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DelaunayPerTick)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
