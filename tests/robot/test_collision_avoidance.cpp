@@ -66,8 +66,11 @@ struct CorridorRun {
 }  // namespace
 
 TEST_CASE("with ORCA no two bodies overlap and the runs converge", "[avoidance]") {
-  for (const auto& [name, radius] :
-       {std::pair{"u_shape.json", 0.02}, {"office.json", 0.1}, {"maze.json", 0.05}}) {
+  for (const auto& [name, radius] : {std::pair{"u_shape.json", 0.02},
+                                     {"office.json", 0.1},
+                                     {"maze.json", 0.05},
+                                     {"two_obstacles.json", 0.03},
+                                     {"dead_ends.json", 0.05}}) {
     INFO(name);
     nlohmann::json j = paper(name).json;
     j["robots"]["radius"] = radius;
