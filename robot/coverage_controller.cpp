@@ -469,30 +469,42 @@ void CoverageController::resolve(Robot& r) {
     r.waypoint.reset();
     r.displaced = true;
   } else if (occupant->deadlocked && occupant->id < r.id) {
-    // Two robots in each other's way: the larger id gives way.
-    start_giving_way(r, occupant->position);
+    // Two robots in each other's way: the larger id gives way, or, if it has no room to (in
+    // a dead end, hemmed in by others), the other one.
+    if (!start_giving_way(r, occupant->position) && occupant->give_way == 0.0)
+      start_giving_way(*occupant, r.position);
   } else if (!occupant->deadlocked && occupant->give_way == 0.0 && is_settled(occupant->status)) {
     // A robot settled on the way steps aside, then returns to its goal.
     start_giving_way(*occupant, r.position);
   }
 }
 
-void CoverageController::start_giving_way(Robot& r, Vec2 from) {
+bool CoverageController::start_giving_way(Robot& r, Vec2 from) {
   // Two body diameters to its own right as it faces the robot it makes room for (the side
   // ORCA's bias passes on), else back and right, straight back, back and left, or left: the
-  // first the walls leave a body's radius of room in, else the roomiest.
+  // first where the walls and the other bodies leave it a body's radius of way, else the
+  // roomiest.
   const Environment& space = free_space(r.id);
   const Vec2 away = r.position - from;
   const Vec2 unit = away / norm(away);
   const double length = 4.0 * config_.radius;
+  double room = 0.0;
   r.give_way_to = r.position;
   for (const double turn : {std::numbers::pi / 2, std::numbers::pi / 4, 0.0, -std::numbers::pi / 4,
                             -std::numbers::pi / 2}) {
     const double c = std::cos(turn), s = std::sin(turn);
     const Vec2 d{c * unit.x - s * unit.y, s * unit.x + c * unit.y};
     const Vec2 q = space.advance(r.position, r.position + length * d);
-    if (distance(r.position, q) > distance(r.position, r.give_way_to)) r.give_way_to = q;
-    if (distance(r.position, q) >= config_.radius) break;
+    const double way = clear_fraction(r, q) * distance(r.position, q);
+    if (way > room) {
+      room = way;
+      r.give_way_to = q;
+    }
+    if (way >= config_.radius) break;
+  }
+  if (room < 0.5 * config_.radius) {
+    r.give_way_to = r.position;
+    return false;  // no room to give way
   }
   // As long as it takes to get there (for a body with a heading, to turn round first), twice
   // over: a neighbour in the way may hold it up.
@@ -506,6 +518,7 @@ void CoverageController::start_giving_way(Robot& r, Vec2 from) {
   r.status = PlanStatus::moving;
   r.stable = false;
   ++give_ways_;
+  return true;
 }
 
 void CoverageController::give_way(Robot& r) {

@@ -181,7 +181,9 @@ class CoverageController {
   // A robot deadlocked for a while: replanned, or one of the two in each other's way (the
   // larger id, or a settled robot on the waypoint) gives way.
   void resolve(Robot& r);
-  void start_giving_way(Robot& r, Vec2 from);
+  // Robot r steps aside for a robot at `from`; false (and nothing started) when the walls and
+  // the other bodies leave it no room.
+  bool start_giving_way(Robot& r, Vec2 from);
   // A motion step aside for the robot it makes room for; then it returns to its goal.
   void give_way(Robot& r);
   // The largest fraction of the straight motion from r's position to `to` that brings its

@@ -89,6 +89,27 @@ TEST_CASE("with ORCA no two bodies overlap and the runs converge", "[avoidance]"
   }
 }
 
+TEST_CASE("differential drives with ORCA converge without contact, dead ends too", "[avoidance]") {
+  // In dead_ends three robots jam in a dead end: giving way in the first direction the walls
+  // allow led nowhere (the other bodies were in it); the direction is chosen by the room the
+  // walls and the bodies leave.
+  for (const auto& [name, radius] : {std::pair{"u_shape.json", 0.02}, {"dead_ends.json", 0.05}}) {
+    INFO(name);
+    nlohmann::json j = paper(name).json;
+    j["robots"]["radius"] = radius;
+    j["robots"]["avoidance"] = {{"type", "orca"}};
+    j["robots"]["kinematics"] = {{"type", "differential_drive"}};
+    const Scenario s = parse_beside_paper(j, name);
+    Distances d(s);
+    const CoverageOutcome out = run_coverage(s, &d);
+    CHECK(out.stop_reason == "converged");
+    CHECK(out.contact_time == 0.0);
+    CHECK(d.least_pair >= 2 * radius - 1e-12);
+    CHECK(out.deadlocks == out.deadlocks_resolved);
+    CHECK(out.turn_time > 0.0);
+  }
+}
+
 TEST_CASE("without avoidance the same bodies overlap", "[avoidance]") {
   nlohmann::json j = paper("u_shape.json").json;
   j["robots"]["radius"] = 0.02;
