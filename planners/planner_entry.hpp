@@ -3,6 +3,7 @@
 // name, description, parameter schema and factory. A factory is called once per run and
 // returns a source that builds each robot's planner, so that what a planner type builds
 // once (a visibility graph, an occupancy grid) is shared by the run's robots.
+#include <cmath>
 #include <functional>
 #include <memory>
 
@@ -15,6 +16,11 @@ namespace covsim {
 // What a planner should know about its sensor to set its thresholds.
 struct SensorSpec {
   double noise_sigma = 0.0;  // metres of Gaussian range noise
+  // Metres, on each axis: how much the robot's position estimate (so every wall it maps) may
+  // jump from one step to the next (robots.localization).
+  double position_sigma = 0.0;
+  // Both together: how far a sensed wall point may wander between readings.
+  double spread() const { return std::hypot(noise_sigma, position_sigma); }
 };
 
 struct PlannerContext {

@@ -100,7 +100,7 @@ PlannerEntry potential_field_entry() {
     if (auto v = params.maybe_number("influence")) p.influence = *v;
     p.repulsive_gain = params.number("repulsive_gain");
     p.stall_window = static_cast<std::size_t>(params.integer("stall_window"));
-    p.progress = std::max(p.progress, 3.0 * ctx.sensor.noise_sigma);
+    p.progress = std::max(p.progress, 3.0 * ctx.sensor.spread());
     const Environment* env = &ctx.environment;
     return [env, p] { return std::make_unique<PotentialField>(*env, p); };
   };

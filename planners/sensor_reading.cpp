@@ -85,6 +85,22 @@ std::vector<ContactEdge> contacts_at(const Environment& env, Vec2 p) {
   return out;
 }
 
+void shift(SensorReading& r, Vec2 offset) {
+  SensedBoundary& v = r.visible();
+  for (SensedPiece& piece : v.pieces) {
+    piece.a = piece.a + offset;
+    piece.b = piece.b + offset;
+  }
+  for (Vec2& d : v.discontinuities)
+    d = d + offset;
+  for (ContactEdge& c : r.contacts) {
+    c.a = c.a + offset;
+    c.b = c.b + offset;
+  }
+  r.position = r.position + offset;
+  r.origin = r.origin + offset;
+}
+
 void add_range_noise(SensorReading& r, RandomStream& rng, double sigma, double tolerance) {
   if (sigma <= 0.0) return;
   std::vector<SensedPiece>& pieces = r.visible().pieces;

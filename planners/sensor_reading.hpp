@@ -66,6 +66,11 @@ SensorReading sense(const Environment& env, Vec2 p, double range);
 // The boundary edges touching p (what a contact sensor reports).
 std::vector<ContactEdge> contacts_at(const Environment& env, Vec2 p);
 
+// The reading as a robot that believes it stands `offset` from where it does maps it: what it
+// measured relative to itself moves with it (its position, the view's origin, the walls it
+// sees and touches). The visible boundary is taken first.
+void shift(SensorReading& r, Vec2 offset);
+
 // Gaussian range noise: every sensed point farther than `tolerance` from the robot moves
 // along its ray from the robot by N(0, sigma²), never closer than the robot itself. A point
 // shared by two joined pieces is one measurement and moves once, so the continuity of the

@@ -550,8 +550,8 @@ PlannerEntry tangent_bug_entry() {
       boundary += distance(b.a, b.b);
     TangentBugParams p = TangentBugParams::for_environment(ctx.environment.diameter(), boundary);
     // A decrease smaller than the sensor's noise is no progress: three standard deviations.
-    p.progress = std::max(p.progress, 3.0 * ctx.sensor.noise_sigma);
-    p.noise_margin = 3.0 * ctx.sensor.noise_sigma;
+    p.progress = std::max(p.progress, 3.0 * ctx.sensor.spread());
+    p.noise_margin = 3.0 * ctx.sensor.spread();
     return [p] { return std::make_unique<TangentBug>(p); };
   };
   e.contract.complete = true;

@@ -15,6 +15,7 @@
 #include "robot/collision_avoidance.hpp"
 #include "robot/coverage_law.hpp"
 #include "robot/kinematics.hpp"
+#include "robot/localization.hpp"
 #include "robot/sensor_model.hpp"
 
 namespace covsim {
@@ -76,6 +77,7 @@ struct CoverageConfig {
   double radius = 0.0;        // m
   AvoidanceConfig avoidance;  // between bodies (radius > 0)
   KinematicsConfig kinematics;
+  LocalizationConfig localization;  // what each robot knows of its own position
   SensorConfig sensor;
   PlannerConfig planner;
   // Convergence: every robot settled at its real target (within position_tolerance) and

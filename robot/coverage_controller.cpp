@@ -15,6 +15,7 @@
 #include "robot/event_classes.hpp"
 #include "robot/ideal_view.hpp"
 #include "robot/kinematics_registry.hpp"
+#include "robot/localization_registry.hpp"
 #include "robot/networked_view.hpp"
 #include "robot/turn_then_drive.hpp"
 
@@ -22,13 +23,22 @@ namespace covsim {
 
 CoverageController::CoverageController(Kernel& kernel, const Environment& env,
                                        const Density& density, const std::vector<Vec2>& starts,
-                                       CoverageConfig config, const PlannerMaker& make_planner)
+                                       CoverageConfig config, const PlannerMaker& make_planner,
+                                       const PlannerWrapper& wrap)
     : kernel_(kernel), env_(env), integrator_(env, density), config_(std::move(config)) {
   const double spacing = robot_spacing(env, starts.size());
   tol_ = Tolerances{config_.position_tolerance_in(env.diameter(), spacing),
                     config_.virtual_tolerance_in(env.diameter(), spacing)};
   step_ = config_.max_speed * config_.loop2_period.seconds();
   space_ = std::make_unique<ConfigurationSpace>(env, config_.radius);
+  localization_ = make_localization(config_.localization,
+                                    LocalizationContext{kernel_, starts, [this](std::uint32_t i) {
+                                                          return robots_[i].position;
+                                                        }});
+  // What the planners are told of their sensing: its range noise, and how much the position
+  // they plan from jumps.
+  sensing_ = SensorSpec{config_.sensor.noise_sigma,
+                        localization_ ? localization_->odometry_jitter(step_) : 0.0};
   // Each part of the free space has its planners' shared maps, built for the first robot in it.
   std::vector<std::optional<PlannerSource>> sources(space_->part_count());
   for (std::uint32_t i = 0; i < starts.size(); ++i) {
@@ -51,11 +61,11 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
       r.planner = make_planner(i);
     } else {
       if (!sources[part])
-        sources[part] = planner_source(
-            config_.planner,
-            PlannerContext{space_->part(part), SensorSpec{config_.sensor.noise_sigma}});
+        sources[part] =
+            planner_source(config_.planner, PlannerContext{space_->part(part), sensing_});
       r.planner = (*sources[part])();
     }
+    if (wrap) r.planner = wrap(std::move(r.planner));
     robots_.push_back(std::move(r));
   }
   state_ = std::make_unique<GeneratorState>(integrator_, starts);
@@ -106,6 +116,7 @@ void CoverageController::start() {
                               loop2_kind_, i, event_class::loop2);
   }
   sensor_->start(t0);
+  if (localization_) localization_->start(t0);
   view_->motion_clock(t0 + config_.loop2_period, config_.loop2_period);
   view_->start(t0);
   kernel_.schedule_periodic(Period::from_ns(config_.sample_period.ns()), t0, sample_kind_,
@@ -133,8 +144,12 @@ void CoverageController::loop1(std::uint32_t i) {
   // Algorithm 1, lines 3-5: what the robot knows, and the law's target from it.
   view_->refresh(i);
   Robot& r = robots_[i];
+  // A law on positions is told the robots' estimates, which the virtual generators follow then.
+  const Generators told = localization_ && !law_->moves_virtual_generators()
+                              ? Generators::virtual_generators
+                              : law_->generators();
   r.virtual_target = guarded(i, "coverage law", config_.law.type, [&] {
-    const Vec2 t = law_->target(r, view_->knowledge(i, law_->generators()));
+    const Vec2 t = law_->target(r, view_->knowledge(i, told));
     if (!is_finite(t))
       throw std::invalid_argument(fmt::format("a target must be finite, found ({}, {})", t.x, t.y));
     return t;
@@ -154,9 +169,13 @@ void CoverageController::loop1(std::uint32_t i) {
   // the goal is merely within the tolerance of the least may stand far from every closest
   // point (office, robot 28: settled beside a corner of a T-wall, 0.06 m from the
   // projection of a target that had moved 0.15 m, and never handed it).
+  // Where it is, as far as it knows, and as near as it can tell (with a localization, not
+  // nearer than three standard deviations of its estimate's jitter).
+  const Vec2 at = known_position(r);
+  const double near = within_reach();
   const auto at_closest_point = [&](Vec2 goal, Vec2 closest) {
-    return distance(r.position, closest) <= tol_.position ||
-           distance(r.position, goal) - distance(closest, goal) <= space.tolerance();
+    return distance(at, closest) <= near ||
+           distance(at, goal) - distance(closest, goal) <= space.tolerance();
   };
   const bool at_target =
       r.projected ? at_closest_point(r.virtual_target, r.real_target) ||
@@ -164,10 +183,17 @@ void CoverageController::loop1(std::uint32_t i) {
                          distance(r.virtual_target, r.assigned) <= tol_.position &&
                          !space.contains(r.assigned) &&
                          at_closest_point(r.assigned, space.closest_point(r.assigned)))
-                  : distance(r.real_target, r.position) <= tol_.position;
+                  : distance(r.real_target, at) <= near;
   r.stable = is_settled(r.status) && at_target &&
              guarded(i, "coverage law", config_.law.type, [&] { return law_->at_rest(r, tol_); });
   if (r.stable) return;
+  // A robot that stopped at its goal by its estimate, and finds by a later fix that it is not
+  // there, is handed its real target again: the projection, for a virtual target it has
+  // already found unreachable.
+  if (localization_ && !at_target &&
+      (r.status == PlanStatus::reached || r.status == PlanStatus::projected) &&
+      distance(r.virtual_target, r.assigned) <= tol_.position)
+    set_goal(r, r.status == PlanStatus::projected ? r.real_target : r.goal);
   // Only a target that moved (by more than the position tolerance) restarts the planner: a
   // goal it reached, found unreachable or gave up on is never handed to it again (it would
   // only do the same again), and periodic updates cannot keep restarting a robot on its way
@@ -180,8 +206,7 @@ void CoverageController::loop1(std::uint32_t i) {
     if (is_settled(r.status)) {
       set_goal(r, goal);
     } else {
-      guarded(i, "planner", r.planner->name(), [&] { r.planner->move_goal(goal); });
-      r.goal = goal;
+      move_goal(r, goal);
     }
     r.assigned = r.virtual_target;
   }
@@ -208,19 +233,54 @@ double CoverageController::excursion(const Environment& space, Vec2 p, Vec2 q) c
 }
 
 void CoverageController::set_goal(Robot& r, Vec2 goal) {
-  guarded(r.id, "planner", r.planner->name(), [&] { r.planner->set_goal(goal); });
   r.goal = goal;
+  r.planner_goal = in_planner_frame(r, goal);
+  guarded(r.id, "planner", r.planner->name(), [&] { r.planner->set_goal(r.planner_goal); });
   r.status = PlanStatus::moving;
+}
+
+void CoverageController::move_goal(Robot& r, Vec2 goal) {
+  r.goal = goal;
+  r.planner_goal = in_planner_frame(r, goal);
+  guarded(r.id, "planner", r.planner->name(), [&] { r.planner->move_goal(r.planner_goal); });
+}
+
+Vec2 CoverageController::in_planner_frame(Robot& r, Vec2 p) {
+  if (!localization_) return p;
+  return p - (localization_->estimate(r.id) - localization_->odometry(r.id));
+}
+
+double CoverageController::within_reach() const {
+  return localization_ ? std::max(tol_.position, 3.0 * localization_->estimate_jitter(step_))
+                       : tol_.position;
 }
 
 void CoverageController::loop2(Kernel& k, std::uint32_t i) {
   Robot& r = robots_[i];
   const Vec2 before = r.position;
+  if (localization_) {
+    const double error = distance(localization_->estimate(i), r.position);
+    localization_error_sum_ += error;
+    localization_error_max_ = std::max(localization_error_max_, error);
+    ++localization_steps_;
+    // Fixes moved the goal in the odometry's frame, where the planner works, by more than the
+    // robot can tell (smaller moves, the fixes' noise, would keep a planner's episode from
+    // ever ending, as loop 1's targets would).
+    if (!is_settled(r.status) && r.give_way == 0.0 &&
+        distance(in_planner_frame(r, r.goal), r.planner_goal) > within_reach())
+      move_goal(r, r.goal);
+  }
   if (r.give_way > 0.0) {
     give_way(r);
   } else if (!is_settled(r.status) && r.waypoint) {
     // On the way to the planner's last step, as far as the neighbours allow.
     if (!follow_waypoint(k, r)) return;
+  } else if (!is_settled(r.status) && localization_ &&
+             distance(localization_->odometry(i), r.planner_goal) <=
+                 std::max(tol_.position, 3.0 * sensing_.position_sigma)) {
+    // As near its planner's goal as its odometry can tell (every motion, however short,
+    // drifts it): there.
+    if (!arrive(k, r, PlanStatus::reached)) return;
   } else if (!is_settled(r.status)) {
     // Algorithm 2, line 5: a planner step toward the real target, in the real world.
     PlanStep s = planner_step(k, r);
@@ -269,6 +329,7 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     }
   }
   if (avoidance_) r.velocity = (r.position - before) / config_.loop2_period.seconds();
+  if (localization_ && !(r.position == before)) localization_->moved(i, r.position - before);
   if (r.projected) ++r.target_outside_steps;
   if (r.status == PlanStatus::stalled) r.stalled_time += config_.loop2_period.seconds();
   if (law_->moves_virtual_generators()) {
@@ -279,9 +340,13 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
       r.virtual_generator = dn <= step_ ? r.virtual_target : r.virtual_generator + (step_ / dn) * d;
       state_->move(Generators::virtual_generators, i, r.virtual_generator);
     }
-  } else if (!(r.virtual_generator == r.position)) {
-    r.virtual_generator = r.position;  // no virtual generators: they follow the positions
-    state_->move(Generators::virtual_generators, i, r.virtual_generator);
+  } else {
+    // No virtual generators: they follow the positions, as the robots know them.
+    const Vec2 g = localization_ ? known_position(r) : r.position;
+    if (!(r.virtual_generator == g)) {
+      r.virtual_generator = g;
+      state_->move(Generators::virtual_generators, i, r.virtual_generator);
+    }
   }
   if (config_.mode == LoopMode::classic && is_settled(r.status)) {
     k.schedule_at(k.now() + config_.loop2_period, loop1_kind_, i, event_class::loop1);
@@ -289,21 +354,35 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
   if (observer_ != nullptr) observer_->on_motion(k.now(), r);
 }
 
+Vec2 CoverageController::known_position(const Robot& r) {
+  if (!localization_) return r.position;
+  const Vec2 e = localization_->estimate(r.id);
+  const Environment& space = free_space(r.id);
+  return space.contains(e) ? e : space.closest_point(e);
+}
+
 PlanStep CoverageController::planner_step(const Kernel& k, Robot& r) {
+  // The planner works in the odometry's frame: from where the odometry says the robot is, the
+  // walls where it senses them from there.
+  const Vec2 known = localization_ ? localization_->odometry(r.id) : r.position;
+  const bool exact = known == r.position;
   const PlanStep s = guarded(r.id, "planner", r.planner->name(), [&] {
-    const PlanStep step = r.planner->step(sensor_->reading(r.id, r.position), step_);
+    SensorReading reading = sensor_->reading(r.id, r.position);
+    if (!exact) shift(reading, known - r.position);
+    const PlanStep step = r.planner->step(reading, step_);
     if (!is_finite(step.next))
       throw std::invalid_argument(
           fmt::format("a step must be a finite point, found ({}, {})", step.next.x, step.next.y));
     return step;
   });
   // A robot moves at most its step length per planner step, whatever the planner asks.
-  if (!(distance(r.position, s.next) <= step_ * (1.0 + 1e-9))) {
+  if (!(distance(known, s.next) <= step_ * (1.0 + 1e-9))) {
     throw std::runtime_error(fmt::format(
         "robot {}'s planner {} proposed a step of {} m at t={} s; the step length is {} m", r.id,
-        r.planner->name(), distance(r.position, s.next), k.now().seconds(), step_));
+        r.planner->name(), distance(known, s.next), k.now().seconds(), step_));
   }
-  return s;
+  // The same displacement from where the robot really is.
+  return exact ? s : PlanStep{r.position + (s.next - known), s.status};
 }
 
 void CoverageController::move_to(Robot& r, Vec2 next) {
@@ -318,7 +397,7 @@ bool CoverageController::arrive(Kernel& k, Robot& r, PlanStatus status) {
   r.status = status;
   r.stable = false;
   if (config_.radius > 0.0 && space_->overlaps_boundary(r.position)) ++wall_contacts_;
-  if (status == PlanStatus::projected && free_space(r.id).contains(r.goal)) {
+  if (status == PlanStatus::projected && !unreachable(r)) {
     failure_ = PlannerFailure{r.id, k.now(), r.goal, r.position};
     k.stop();
     return false;
@@ -330,6 +409,15 @@ bool CoverageController::arrive(Kernel& k, Robot& r, PlanStatus status) {
     set_goal(r, r.real_target);
   }
   return true;
+}
+
+bool CoverageController::unreachable(const Robot& r) const {
+  const Environment& space = free_space(r.id);
+  if (!localization_) return !space.contains(r.goal);
+  // The planner's goal among the walls as it senses them; one nearer the boundary than the
+  // robot can tell may have crossed it as fixes moved it.
+  const Vec2 p = r.planner_goal - (localization_->odometry(r.id) - r.position);
+  return !space.contains(p) || space.boundary_distance(p) <= within_reach();
 }
 
 template <class F>

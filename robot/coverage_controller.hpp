@@ -43,6 +43,7 @@
 #include "robot/collision_avoidance.hpp"
 #include "robot/coverage_config.hpp"
 #include "robot/generator_state.hpp"
+#include "robot/localization.hpp"
 #include "robot/neighbor_view.hpp"
 #include "robot/robot.hpp"
 #include "robot/sensor_model.hpp"
@@ -76,12 +77,14 @@ class CoverageObserver {
 
 // Builds robot i's planner; unset, the planner the configuration names.
 using PlannerMaker = std::function<std::unique_ptr<Planner>(std::uint32_t robot)>;
+// Wraps each robot's planner, however it was built (a timer around its steps).
+using PlannerWrapper = std::function<std::unique_ptr<Planner>(std::unique_ptr<Planner>)>;
 
 class CoverageController {
  public:
   CoverageController(Kernel& kernel, const Environment& env, const Density& density,
                      const std::vector<Vec2>& starts, CoverageConfig config,
-                     const PlannerMaker& make_planner = {});
+                     const PlannerMaker& make_planner = {}, const PlannerWrapper& wrap = {});
   ~CoverageController();
 
   void set_observer(CoverageObserver* o) { observer_ = o; }
@@ -120,6 +123,16 @@ class CoverageController {
   // acceleration limit (a detour moved the point a body was driving to).
   double turn_time() const { return turn_time_; }
   std::uint64_t hard_stops() const { return hard_stops_; }
+  // With a localization other than exact: the mean and the largest distance between a
+  // robot's estimate (inside its free space) and its position over every loop-2 step of
+  // every robot, and the tracking fixes delivered.
+  double localization_error_mean() const {
+    return localization_steps_ == 0
+               ? 0.0
+               : localization_error_sum_ / static_cast<double>(localization_steps_);
+  }
+  double localization_error_max() const { return localization_error_max_; }
+  std::uint64_t fixes() const { return localization_ ? localization_->fixes() : 0; }
   const CellIntegrator& integrator() const { return integrator_; }
   const CoverageLaw& law() const { return *law_; }
   CoverageLaw& law() { return *law_; }
@@ -159,10 +172,27 @@ class CoverageController {
   void check_bodies();
   // Robot r's planner's next step from where it is; throws for a step that is not finite or
   // longer than the step length.
+  // With a localization the planner works in the odometry's frame: it is told the reading as
+  // the robot maps it from where its odometry says it is, and its step is the same
+  // displacement from where the robot is.
   PlanStep planner_step(const Kernel& k, Robot& r);
+  // Where robot r believes it is: its localization's estimate, taken into its free space (it
+  // knows it is not inside a wall); its position with exact localization.
+  Vec2 known_position(const Robot& r);
+  // A point of Ω in the frame robot r's planner works in (its odometry's).
+  Vec2 in_planner_frame(Robot& r, Vec2 p);
+  // How near its target a robot counts as there: the position tolerance, or, with a
+  // localization, not nearer than three standard deviations of its estimate's jitter (it
+  // cannot tell).
+  double within_reach() const;
+  // A goal in Ω for robot r's planner: a new one, or the one under way moved.
+  void move_goal(Robot& r, Vec2 goal);
   void move_to(Robot& r, Vec2 next);
   // The robot is at its planner's step, which ended with this status; false: the run stops.
   bool arrive(Kernel& k, Robot& r, PlanStatus status);
+  // Whether robot r's planner's goal lies outside the free space (its planner may find it
+  // unreachable).
+  bool unreachable(const Robot& r) const;
   // A motion step toward r's waypoint (with collision avoidance or kinematics); false: the
   // run stops.
   bool follow_waypoint(Kernel& k, Robot& r);
@@ -198,6 +228,10 @@ class CoverageController {
   std::uint64_t wall_contacts_ = 0;
   std::unique_ptr<CollisionAvoidance> avoidance_;  // unset: none
   std::unique_ptr<Kinematics> kinematics_;         // unset: the single integrator
+  std::unique_ptr<Localization> localization_;     // unset: exact
+  SensorSpec sensing_;  // what the planners are told of their sensing and localization
+  double localization_error_sum_ = 0.0, localization_error_max_ = 0.0;
+  std::uint64_t localization_steps_ = 0;
   double turn_time_ = 0.0;
   std::uint64_t hard_stops_ = 0;
   std::vector<SensedNeighbor> neighbors_;

@@ -10,8 +10,8 @@ GeodesicLloydLaw::GeodesicLloydLaw(const Environment& env, const Density& densit
       graph_(std::make_unique<VisibilityGraph>(env)),
       lattice_(std::make_unique<GeodesicLattice>(*graph_, density, resolution)) {}
 
-Vec2 GeodesicLloydLaw::target(const Robot& r, const Knowledge& k) {
-  const Vec2 p = r.position;
+Vec2 GeodesicLloydLaw::target(const Robot&, const Knowledge& k) {
+  const Vec2 p = k.points[k.self];  // where the robot is, as it knows it
   if (k.version) {
     if (!shared_ || shared_version_ != *k.version) {
       shared_.emplace(*lattice_, k.points);

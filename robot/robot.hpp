@@ -19,6 +19,7 @@ struct Robot {
   bool projected = false;  // t_virt lies outside Ω (an obstacle boundary Voronoi region)
   bool stable = false;     // the last loop 1 left it where it was: nothing to do
   Vec2 goal;               // the goal the planner is working on
+  Vec2 planner_goal;       // the goal as the planner was given it (in its odometry's frame)
   Vec2 assigned;           // the loop-1 target that goal was set for
   // Failure measures: loop-2 steps taken while the loop-1 target lay outside Ω, and the
   // time spent stalled (the planner gave up short of its goal).

@@ -17,6 +17,7 @@
 #include "robot/collision_avoidance_registry.hpp"
 #include "robot/coverage_law_registry.hpp"
 #include "robot/kinematics_registry.hpp"
+#include "robot/localization_registry.hpp"
 
 namespace covsim {
 
@@ -53,7 +54,10 @@ inline const auto& component_sections() {
                                        collision_avoidance_registry},
       ComponentSection<KinematicsEntry>{"kinematics", "robots.kinematics", "type",
                                         KinematicsConfig{}.type, R"({"type": "single_integrator"})",
-                                        kinematics_registry}};
+                                        kinematics_registry},
+      ComponentSection<LocalizationEntry>{"localization", "robots.localization", "type",
+                                          LocalizationConfig{}.type, R"({"type": "exact"})",
+                                          localization_registry}};
   return sections;
 }
 

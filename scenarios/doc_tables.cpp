@@ -7,6 +7,7 @@
 #include "net/channel_registry.hpp"
 #include "robot/collision_avoidance_registry.hpp"
 #include "robot/kinematics_registry.hpp"
+#include "robot/localization_registry.hpp"
 #include "scenarios/scenario_sections.hpp"
 
 namespace covsim {
@@ -43,8 +44,12 @@ std::vector<DocTable> scenario_doc_tables() {
   }
   // And a kinematics' in robots.kinematics (a differential drive's wheel base).
   for (const KinematicsEntry& e : kinematics_registry().entries()) {
+    if (!e.params.empty()) out.push_back({"robots.kinematics." + e.name, markdown_table(e.params)});
+  }
+  // And a localization's in robots.localization (a tracking system's rate).
+  for (const LocalizationEntry& e : localization_registry().entries()) {
     if (!e.params.empty())
-      out.push_back({"robots.kinematics." + e.name, markdown_table(e.params)});
+      out.push_back({"robots.localization." + e.name, markdown_table(e.params)});
   }
   return out;
 }

@@ -148,6 +148,10 @@ void read_components(const JsonValue& root, CoverageConfig& c) {
       const ComponentChoice choice = read_component(*kin, component_section<KinematicsEntry>());
       c.kinematics = KinematicsConfig{choice.type, choice.params};
     }
+    if (auto loc = r->find("localization")) {
+      const ComponentChoice choice = read_component(*loc, component_section<LocalizationEntry>());
+      c.localization = LocalizationConfig{choice.type, choice.params};
+    }
   }
   if (auto k = root.find("controller")) {
     // The section's own keys (the projection policy) are read with the fixed sections.

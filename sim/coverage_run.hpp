@@ -70,6 +70,9 @@ struct CoverageOutcome {
   // Kinematics (CoverageController::turn_time, hard_stops): zeros for the single integrator.
   double turn_time = 0.0;
   std::uint64_t hard_stops = 0;
+  // Localization (CoverageController::localization_error_mean and the rest): zeros when exact.
+  double localization_error_mean = 0.0, localization_error_max = 0.0;
+  std::uint64_t fixes = 0;
   // Wall-clock seconds spent in planner steps, and how many steps: the only measures besides
   // wall times that vary between runs.
   double planner_seconds = 0.0;

@@ -21,7 +21,7 @@
 namespace covsim {
 
 // Changes whenever a registry entry or an extension interface changes incompatibly.
-inline constexpr int kPluginApiVersion = 4;
+inline constexpr int kPluginApiVersion = 5;
 
 // The registries of component_sections(), by name, for plugins; built from that table (in its
 // order, which the members' types check), so that it stays the one list of them.
@@ -34,6 +34,7 @@ struct Registries {
   Registry<DensityEntry>& densities;
   Registry<AvoidanceEntry>& avoidance;
   Registry<KinematicsEntry>& kinematics;
+  Registry<LocalizationEntry>& localization;
 };
 
 inline Registries registries() {

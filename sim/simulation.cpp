@@ -7,7 +7,6 @@
 
 #include "core/trace.hpp"
 #include "io/interrupt.hpp"
-#include "planners/planner_registry.hpp"
 #include "robot/external_law.hpp"
 #include "scenarios/scenario_error.hpp"
 
@@ -49,18 +48,14 @@ Simulation::Simulation(const Scenario& scenario, std::optional<std::uint64_t> se
                         ": $: missing required key \"seed\" (a run needs a seed)");
   kernel_ = std::make_unique<Kernel>(*scenario_.seed);
   if (trace != nullptr) kernel_->attach_trace(trace);
-  // Every planner is wrapped to time its steps (wall clock, outside the simulation).
-  const PlannerSource source =
-      make_planner
-          ? PlannerSource{}
-          : planner_source(scenario_.coverage.planner,
-                           PlannerContext{*scenario_.environment,
-                                          SensorSpec{scenario_.coverage.sensor.noise_sigma}});
+  // Every planner (the scenario's, built by the controller for the free space of the robots'
+  // bodies and told what they sense, or make_planner's) is wrapped to time its steps (wall
+  // clock, outside the simulation).
   controller_ = std::make_unique<CoverageController>(
       *kernel_, *scenario_.environment, *scenario_.density, scenario_.robot_positions,
-      scenario_.coverage, [&](std::uint32_t i) -> std::unique_ptr<Planner> {
-        return std::make_unique<TimedPlanner>(make_planner ? make_planner(i) : source(),
-                                              planner_totals_);
+      scenario_.coverage, make_planner,
+      [this](std::unique_ptr<Planner> p) -> std::unique_ptr<Planner> {
+        return std::make_unique<TimedPlanner>(std::move(p), planner_totals_);
       });
   controller_->set_observer(observers_.get());
 }
@@ -184,6 +179,9 @@ CoverageOutcome Simulation::outcome() const {
   out.deadlocks_resolved = c.deadlocks_resolved();
   out.turn_time = c.turn_time();
   out.hard_stops = c.hard_stops();
+  out.localization_error_mean = c.localization_error_mean();
+  out.localization_error_max = c.localization_error_max();
+  out.fixes = c.fixes();
   out.planner_seconds = planner_totals_.seconds;
   out.planner_steps = planner_totals_.steps;
   return out;

@@ -352,6 +352,19 @@ const std::vector<Measure>& measures() {
              "driving to",
              &O::hard_stops)
           .later(),
+      member("localization.error_mean", K::number, "m",
+             "mean distance between a robot's estimate of its position and the position, over "
+             "every robot's loop-2 steps (0 with exact localization)",
+             &O::localization_error_mean)
+          .in_runs(39, "localization_error")
+          .in_summary()
+          .later(),
+      member("localization.error_max", K::number, "m",
+             "largest distance between a robot's estimate and its position at a loop-2 step",
+             &O::localization_error_max)
+          .later(),
+      member("localization.fixes", K::integer, "", "tracking fixes the robots received", &O::fixes)
+          .later(),
       member("planner.steps", K::integer, "", "planner steps taken", &O::planner_steps),
       outcome(
           "planner.step_time_us", K::number, "µs",

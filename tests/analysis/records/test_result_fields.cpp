@@ -82,6 +82,9 @@ RunMeasures known_run() {
   o.deadlocks_resolved = 3;
   o.turn_time = 6.5;
   o.hard_stops = 2;
+  o.localization_error_mean = 0.003;
+  o.localization_error_max = 0.0125;
+  o.fixes = 640;
   o.planner_steps = 200;
   o.planner_seconds = 0.0005;  // 2.5 µs a step
   o.stop_reason = "planner_failure";
@@ -116,6 +119,7 @@ const ojson kKnownFinal = ojson::parse(R"({
   "bodies": {"radius": 0.0375, "gap_min": -0.005, "contact_time": 1.5, "wall_contacts": 3,
              "deadlocks": 4, "deadlock_time": 2.25, "deadlocks_resolved": 3,
              "turn_time": 6.5, "hard_stops": 2},
+  "localization": {"error_mean": 0.003, "error_max": 0.0125, "fixes": 640},
   "planner": {"steps": 200, "step_time_us": 2.5},
   "stop_reason": "planner_failure",
   "planner_failure": {"robot": 3, "time": 7.0, "goal": [1.0, 2.0], "position": [3.0, 4.0]},
@@ -136,7 +140,8 @@ const ojson kKnownRun = ojson::parse(R"({
   "planner_step_time": 2.5, "wall_time": 3.5, "fingerprint": "0123456789abcdef",
   "delivery_ratio": 1.0476190476190477, "latency_mean": 0.5, "latency_p95": 0.75,
   "channel_occupancy": 0.25, "phy_drops": 32, "gap_min": -0.005, "contact_time": 1.5,
-  "wall_contacts": 3, "deadlocks": 4, "deadlock_time": 2.25, "turn_time": 6.5
+  "wall_contacts": 3, "deadlocks": 4, "deadlock_time": 2.25, "turn_time": 6.5,
+  "localization_error": 0.003
 })");
 
 // docs/outputs.md's table of measures, as measures() gives it.

@@ -1,0 +1,74 @@
+#include "robot/dead_reckoning.hpp"
+
+#include <cmath>
+
+#include "robot/event_classes.hpp"
+
+namespace covsim {
+
+DeadReckoning::DeadReckoning(const LocalizationContext& context, DeadReckoningConfig config)
+    : kernel_(context.kernel), position_(context.position), config_(config) {
+  for (std::uint32_t i = 0; i < context.starts.size(); ++i) {
+    robots_.push_back(Tracked{context.starts[i],
+                              Vec2{},
+                              {},
+                              kernel_.stream(i, "localization-fix"),
+                              kernel_.stream(i, "localization-drift")});
+  }
+  if (config_.rate)
+    frame_kind_ = kernel_.add_kind("tracking_frame", [this](Kernel&, const Event&) { frame(); });
+}
+
+void DeadReckoning::start(SimTime t0) {
+  // A frame sees the motion steps of its instant (it comes after loop 2 in that instant).
+  if (config_.rate)
+    kernel_.schedule_periodic(Period::from_rate(*config_.rate), t0, frame_kind_, event_class::world,
+                              event_class::broadcast);
+}
+
+void DeadReckoning::frame() {
+  const SimTime delivered = kernel_.now() + config_.latency;
+  for (std::uint32_t i = 0; i < robots_.size(); ++i) {
+    Tracked& t = robots_[i];
+    Vec2 fix = position_(i);
+    if (config_.noise > 0.0)
+      fix = fix + Vec2{t.fix_rng.normal(0.0, config_.noise), t.fix_rng.normal(0.0, config_.noise)};
+    t.pending.push_back(Fix{delivered, fix, t.odometry});
+  }
+}
+
+void DeadReckoning::moved(std::uint32_t i, Vec2 d) {
+  Tracked& t = robots_[i];
+  const double length = norm(d);
+  if (length == 0.0) return;
+  Vec2 e = d;
+  if (config_.drift > 0.0) {
+    const double sigma = config_.drift * std::sqrt(length);
+    e = e + Vec2{t.drift_rng.normal(0.0, sigma), t.drift_rng.normal(0.0, sigma)};
+  }
+  t.odometry = t.odometry + e;
+}
+
+Vec2 DeadReckoning::estimate(std::uint32_t i) {
+  Tracked& t = robots_[i];
+  // The latest fix delivered by now: where the robot was at its capture (compensated) or is now.
+  while (!t.pending.empty() && t.pending.front().delivered <= kernel_.now()) {
+    const Fix& f = t.pending.front();
+    t.correction = f.position - (config_.compensated ? f.odometry : t.odometry);
+    t.pending.pop_front();
+    ++fixes_;
+  }
+  return t.odometry + t.correction;
+}
+
+double DeadReckoning::odometry_jitter(double step) const {
+  return config_.drift * std::sqrt(step);
+}
+
+double DeadReckoning::estimate_jitter(double step) const {
+  // A fix replaces one error by another, independent one; odometry adds drift over the step.
+  const double fix = config_.rate ? 2.0 * config_.noise * config_.noise : 0.0;
+  return std::sqrt(fix + config_.drift * config_.drift * step);
+}
+
+}  // namespace covsim

@@ -1,0 +1,48 @@
+#include "robot/tracking_system.hpp"
+
+#include "robot/dead_reckoning.hpp"
+
+namespace covsim {
+
+LocalizationEntry tracking_system_entry() {
+  LocalizationEntry e;
+  e.name = "tracking";
+  e.description =
+      "an overhead tracking system's fixes at a rate, late and noisy, with odometry between them";
+  e.params = {
+      ParamSpec::number("rate", "Hz", "frames per second; every frame fixes every robot")
+          .positive()
+          .at_most(1000.0)
+          .defaults_to(10.0),
+      ParamSpec::number("latency", "s", "from a frame's capture to the robot")
+          .non_negative()
+          .at_most(10.0)
+          .defaults_to(0.0),
+      ParamSpec::number("noise", "m", "standard deviation of a fix on each axis")
+          .non_negative()
+          .at_most(10.0)
+          .defaults_to(0.002),
+      ParamSpec::boolean("compensated",
+                         "a late fix is moved on by what the odometry has moved since its "
+                         "capture (false: taken as the position when it arrives, so a moving "
+                         "robot's estimate lags by its speed times the latency)")
+          .defaults_to(true),
+      ParamSpec::number("drift", "m^½",
+                        "the odometry's standard deviation on each axis per √m travelled, "
+                        "between fixes")
+          .non_negative()
+          .at_most(1.0)
+          .defaults_to(0.0)};
+  e.make = [](const LocalizationContext& c, const Params& p) -> std::unique_ptr<Localization> {
+    DeadReckoningConfig d;
+    d.rate = p.number("rate");
+    d.latency = SimTime::from_seconds(p.number("latency"));
+    d.noise = p.number("noise");
+    d.drift = p.number("drift");
+    d.compensated = p.boolean("compensated");
+    return std::make_unique<DeadReckoning>(c, d);
+  };
+  return e;
+}
+
+}  // namespace covsim
