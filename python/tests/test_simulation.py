@@ -250,3 +250,19 @@ def test_a_seed_draws_its_own_robots_as_the_command_line_does(scenarios, cli, tm
     cli("run", tmp_path / "drawn.json", "--seed", "2", "--out", tmp_path / "run")
     final = json.loads((tmp_path / "run" / "final.json").read_text())
     assert two.run()["fingerprint"] == final["fingerprint"]
+
+
+def test_localization_from_python_matches_the_cli(scenarios, cli, tmp_path):
+    s = covsim.Scenario.from_file(scenarios / "epuck_u_shape.json")
+    out = covsim.Simulation(s).run()
+    cli("run", scenarios / "epuck_u_shape.json", "--out", tmp_path / "run")
+    final = json.loads((tmp_path / "run" / "final.json").read_text())
+    assert out["fingerprint"] == final["fingerprint"]
+    assert out["localization"] == final["localization"]
+    assert out["converged"] and out["localization"]["fixes"] > 0
+    assert 0.002 < out["localization"]["error_mean"] < 0.003  # 2 mm noise: 2 √(π/2) mm
+    exact = covsim.Simulation(s.set("robots.localization", {"type": "exact"})).run()
+    assert exact["localization"] == {"error_mean": 0.0, "error_max": 0.0, "fixes": 0}
+    with pytest.raises(covsim.ScenarioError, match=r"robots\.localization.*noise"):
+        covsim.Scenario.from_file(scenarios / "epuck_u_shape.json").set(
+            "robots.localization", {"type": "tracking", "noise": -0.1})

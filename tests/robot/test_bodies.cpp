@@ -63,6 +63,24 @@ TEST_CASE("bodies keep their radius from every wall and converge", "[bodies]") {
   }
 }
 
+TEST_CASE("planners that plan on their map plan in the bodies' free space", "[bodies]") {
+  // Built on Ω, they would aim at its corners, which the bodies cannot reach: the run would
+  // not converge.
+  for (const char* planner : {"visibility_graph", "grid_astar"}) {
+    INFO(planner);
+    nlohmann::json j = scenario_json("u_shape.json");
+    j["robots"]["radius"] = 0.03;
+    j["robots"]["positions"] = {{0.05, 0.9}, {0.12, 0.9}, {0.19, 0.9}, {0.05, 0.83}, {0.12, 0.83}};
+    j["planner"] = {{"type", planner}};
+    const Scenario s = parse_beside_paper(j, "u_shape.json");
+    Clearance clearance(s);
+    const CoverageOutcome out = run_coverage(s, &clearance);
+    CHECK(out.stop_reason == "converged");
+    CHECK(out.stalled_time == 0.0);
+    CHECK(clearance.least >= 0.03 - 1e-9 * s.environment->diameter());
+  }
+}
+
 TEST_CASE("with radius 0 the body measures stay empty", "[bodies]") {
   const CoverageOutcome out = run_coverage(paper("u_shape.json"));
   CHECK(std::isnan(out.body_gap_min));

@@ -175,3 +175,33 @@ TEST_CASE("robots.localization is checked when the scenario is read", "[localiza
   j["robots"]["localization"] = {{"type", "odometry"}, {"noise", 0.1}};
   CHECK_THROWS_WITH(covsim::test::parse_beside_paper(j, "u_shape"), Contains("noise"));
 }
+
+TEST_CASE(
+    "the e-puck scenario (the paper's experiment) ends in the ideal configuration within "
+    "the tracking noise",
+    "[localization]") {
+  const Scenario epuck = paper("epuck_u_shape.json");
+  const CoverageOutcome out = run_coverage(epuck);
+  CHECK(out.converged);
+  CHECK(out.contact_time == 0.0);
+  CHECK(out.wall_contacts == 0);
+  CHECK(out.turn_time > 0.0);
+  CHECK(out.fixes > 0);
+  CHECK(out.localization_error_mean ==
+        Approx(0.002 * std::sqrt(std::numbers::pi / 2)).epsilon(0.15));
+  // The ideal simulation from the same starts: points, single integrator, exact positions.
+  nlohmann::json j = epuck.json;
+  j["robots"]["radius"] = 0.0;
+  j["robots"].erase("avoidance");
+  j["robots"].erase("kinematics");
+  j["robots"].erase("localization");
+  const CoverageOutcome ideal = run_coverage(covsim::test::parse_beside_paper(j, "epuck_u_shape"));
+  REQUIRE(ideal.converged);
+  CHECK(ideal.turn_time == 0.0);
+  for (const RobotOutcome& r : out.robots) {
+    double nearest = INFINITY;
+    for (const RobotOutcome& q : ideal.robots)
+      nearest = std::min(nearest, distance(r.position, q.position));
+    CHECK(nearest < 0.015);
+  }
+}
