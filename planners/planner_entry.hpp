@@ -61,6 +61,10 @@ struct PlannerEntry : ComponentInfo {
   PlannerContract contract;
   // Its steps depend on the range sensor's range (a sensor-range study varies them).
   bool reads_range = false;
+  // It plans from its sensor readings alone, never from its map of Ω: it works from an
+  // estimated position (robots.localization), in the robot's odometry frame. A planner that
+  // consults the map needs the robot's position exactly (its paths graze Ω's corners).
+  bool senses_only = false;
 };
 
 // A scenario's "planner": the type, and its parameters validated against its schema.

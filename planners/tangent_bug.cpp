@@ -542,6 +542,7 @@ PlannerEntry tangent_bug_entry() {
   PlannerEntry e;
   e.name = "tangent_bug";
   e.reads_range = true;
+  e.senses_only = true;
   e.description =
       "TangentBug (Kamon et al. 1998) with target projection; range sensor of any range";
   e.make = [](const PlannerContext& ctx, const Params&) -> PlannerSource {

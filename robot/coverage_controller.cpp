@@ -36,7 +36,7 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
                                                           return robots_[i].position;
                                                         }});
   // What the planners are told of their sensing: its range noise, and how much the position
-  // they plan from jumps.
+  // they plan from (the odometry) jumps.
   sensing_ = SensorSpec{config_.sensor.noise_sigma,
                         localization_ ? localization_->odometry_jitter(step_) : 0.0};
   // Each part of the free space has its planners' shared maps, built for the first robot in it.
@@ -188,12 +188,12 @@ void CoverageController::loop1(std::uint32_t i) {
              guarded(i, "coverage law", config_.law.type, [&] { return law_->at_rest(r, tol_); });
   if (r.stable) return;
   // A robot that stopped at its goal by its estimate, and finds by a later fix that it is not
-  // there, is handed its real target again: the projection, for a virtual target it has
-  // already found unreachable.
+  // there, is handed its goal again: the projection of the target it was set for, for a
+  // virtual target it has already found unreachable.
   if (localization_ && !at_target &&
       (r.status == PlanStatus::reached || r.status == PlanStatus::projected) &&
       distance(r.virtual_target, r.assigned) <= tol_.position)
-    set_goal(r, r.status == PlanStatus::projected ? r.real_target : r.goal);
+    set_goal(r, r.status == PlanStatus::projected ? space.closest_point(r.assigned) : r.goal);
   // Only a target that moved (by more than the position tolerance) restarts the planner: a
   // goal it reached, found unreachable or gave up on is never handed to it again (it would
   // only do the same again), and periodic updates cannot keep restarting a robot on its way
@@ -245,13 +245,23 @@ void CoverageController::move_goal(Robot& r, Vec2 goal) {
   guarded(r.id, "planner", r.planner->name(), [&] { r.planner->move_goal(r.planner_goal); });
 }
 
+Vec2 CoverageController::planner_position(const Robot& r) const {
+  return localization_ ? localization_->odometry(r.id) : r.position;
+}
+
 Vec2 CoverageController::in_planner_frame(Robot& r, Vec2 p) {
   if (!localization_) return p;
   return p - (localization_->estimate(r.id) - localization_->odometry(r.id));
 }
 
+double CoverageController::planner_reach() const {
+  return std::max(tol_.position, 3.5 * sensing_.position_sigma);
+}
+
 double CoverageController::within_reach() const {
-  return localization_ ? std::max(tol_.position, 3.0 * localization_->estimate_jitter(step_))
+  // 3.5 standard deviations on each axis: a 2D Gaussian jump goes beyond with probability
+  // exp(-3.5² / 2), 0.2%.
+  return localization_ ? std::max(tol_.position, 3.5 * localization_->estimate_jitter(step_))
                        : tol_.position;
 }
 
@@ -265,8 +275,9 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     ++localization_steps_;
     // Fixes moved the goal in the odometry's frame, where the planner works, by more than the
     // robot can tell (smaller moves, the fixes' noise, would keep a planner's episode from
-    // ever ending, as loop 1's targets would).
-    if (!is_settled(r.status) && r.give_way == 0.0 &&
+    // ever ending, as loop 1's targets would); not while a step the planner proposed is still
+    // being carried out.
+    if (!is_settled(r.status) && r.give_way == 0.0 && !r.waypoint &&
         distance(in_planner_frame(r, r.goal), r.planner_goal) > within_reach())
       move_goal(r, r.goal);
   }
@@ -276,10 +287,9 @@ void CoverageController::loop2(Kernel& k, std::uint32_t i) {
     // On the way to the planner's last step, as far as the neighbours allow.
     if (!follow_waypoint(k, r)) return;
   } else if (!is_settled(r.status) && localization_ &&
-             distance(localization_->odometry(i), r.planner_goal) <=
-                 std::max(tol_.position, 3.0 * sensing_.position_sigma)) {
-    // As near its planner's goal as its odometry can tell (every motion, however short,
-    // drifts it): there.
+             distance(planner_position(r), r.planner_goal) <= planner_reach()) {
+    // As near its planner's goal as it can tell (every motion, however short, drifts an
+    // odometry; fixes move an estimate): there.
     if (!arrive(k, r, PlanStatus::reached)) return;
   } else if (!is_settled(r.status)) {
     // Algorithm 2, line 5: a planner step toward the real target, in the real world.
@@ -362,9 +372,9 @@ Vec2 CoverageController::known_position(const Robot& r) {
 }
 
 PlanStep CoverageController::planner_step(const Kernel& k, Robot& r) {
-  // The planner works in the odometry's frame: from where the odometry says the robot is, the
-  // walls where it senses them from there.
-  const Vec2 known = localization_ ? localization_->odometry(r.id) : r.position;
+  // The planner works in its frame: from where it believes the robot is, the walls where it
+  // senses them from there.
+  const Vec2 known = planner_position(r);
   const bool exact = known == r.position;
   const PlanStep s = guarded(r.id, "planner", r.planner->name(), [&] {
     SensorReading reading = sensor_->reading(r.id, r.position);
@@ -415,9 +425,12 @@ bool CoverageController::unreachable(const Robot& r) const {
   const Environment& space = free_space(r.id);
   if (!localization_) return !space.contains(r.goal);
   // The planner's goal among the walls as it senses them; one nearer the boundary than the
-  // robot can tell may have crossed it as fixes moved it.
+  // robot can tell, or than its odometry has drifted while it walked, may have crossed it as
+  // fixes and drift moved it.
   const Vec2 p = r.planner_goal - (localization_->odometry(r.id) - r.position);
-  return !space.contains(p) || space.boundary_distance(p) <= within_reach();
+  const double margin =
+      std::max(within_reach(), 3.5 * localization_->odometry_jitter(r.path_length));
+  return !space.contains(p) || space.boundary_distance(p) <= margin;
 }
 
 template <class F>

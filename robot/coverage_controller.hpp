@@ -124,7 +124,7 @@ class CoverageController {
   double turn_time() const { return turn_time_; }
   std::uint64_t hard_stops() const { return hard_stops_; }
   // With a localization other than exact: the mean and the largest distance between a
-  // robot's estimate (inside its free space) and its position over every loop-2 step of
+  // robot's estimate and its position over every loop-2 step of
   // every robot, and the tracking fixes delivered.
   double localization_error_mean() const {
     return localization_steps_ == 0
@@ -179,7 +179,10 @@ class CoverageController {
   // Where robot r believes it is: its localization's estimate, taken into its free space (it
   // knows it is not inside a wall); its position with exact localization.
   Vec2 known_position(const Robot& r);
-  // A point of Ω in the frame robot r's planner works in (its odometry's).
+  // Where robot r's planner believes it is: its odometry; its position with exact
+  // localization.
+  Vec2 planner_position(const Robot& r) const;
+  // A point of Ω in the frame robot r's planner works in.
   Vec2 in_planner_frame(Robot& r, Vec2 p);
   // How near its target a robot counts as there: the position tolerance, or, with a
   // localization, not nearer than three standard deviations of its estimate's jitter (it
@@ -187,6 +190,9 @@ class CoverageController {
   double within_reach() const;
   // A goal in Ω for robot r's planner: a new one, or the one under way moved.
   void move_goal(Robot& r, Vec2 goal);
+  // How near its planner's goal a robot counts as there by where its planner believes it is
+  // (every motion, however short, drifts an odometry).
+  double planner_reach() const;
   void move_to(Robot& r, Vec2 next);
   // The robot is at its planner's step, which ended with this status; false: the run stops.
   bool arrive(Kernel& k, Robot& r, PlanStatus status);

@@ -41,6 +41,12 @@ void DeadReckoning::moved(std::uint32_t i, Vec2 d) {
   Tracked& t = robots_[i];
   const double length = norm(d);
   if (length == 0.0) return;
+  if (config_.drift == 0.0) {
+    // Without drift the odometry is the position itself (and sums of displacements would
+    // only round away from it).
+    t.odometry = position_(i);
+    return;
+  }
   Vec2 e = d;
   if (config_.drift > 0.0) {
     const double sigma = config_.drift * std::sqrt(length);

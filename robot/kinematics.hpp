@@ -60,7 +60,7 @@ struct KinematicsContext {
 };
 
 struct KinematicsEntry : ComponentInfo {
-  // Unset for the single integrator, whose motion is the controller's own.
+  // Returns null for the single integrator, whose motion is the controller's own.
   std::function<std::unique_ptr<Kinematics>(const KinematicsContext&, const Params&)> make;
 };
 

@@ -50,7 +50,7 @@ struct LocalizationContext {
 };
 
 struct LocalizationEntry : ComponentInfo {
-  // Unset for `exact`, whose estimate is the position itself.
+  // Returns null for `exact`, whose estimate is the position itself.
   std::function<std::unique_ptr<Localization>(const LocalizationContext&, const Params&)> make;
 };
 

@@ -25,7 +25,8 @@ LocalizationEntry tracking_system_entry() {
       ParamSpec::boolean("compensated",
                          "a late fix is moved on by what the odometry has moved since its "
                          "capture (false: taken as the position when it arrives, so a moving "
-                         "robot's estimate lags by its speed times the latency)")
+                         "robot's estimate lags by its speed times the latency, and up to a "
+                         "loop-2 period more)")
           .defaults_to(true),
       ParamSpec::number("drift", "m^½",
                         "the odometry's standard deviation on each axis per √m travelled, "

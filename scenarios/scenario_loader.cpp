@@ -151,6 +151,15 @@ void read_components(const JsonValue& root, CoverageConfig& c) {
     if (auto loc = r->find("localization")) {
       const ComponentChoice choice = read_component(*loc, component_section<LocalizationEntry>());
       c.localization = LocalizationConfig{choice.type, choice.params};
+      // A planner on Ω's map plans paths that graze its corners, from a position it would
+      // have to know exactly.
+      const PlannerEntry* planner = planner_registry().find(c.planner.type);
+      if (c.localization.type != LocalizationConfig{}.type && planner != nullptr &&
+          !planner->senses_only)
+        loc->fail(fmt::format(
+            "{} localization needs a planner that plans from what it senses (tangent_bug); "
+            "{} plans on its map of Ω, from a position it would have to know exactly",
+            c.localization.type, c.planner.type));
     }
   }
   if (auto k = root.find("controller")) {

@@ -11,10 +11,12 @@ and 4.56 min per run.
 
 Each seed is one trial: the robots placed by hand, each start moved by Gaussian noise of
 3 mm on each axis (clipped at 4 mm), and its own tracking noise. A trial's distance is the
-mean over the five robots of the distance between its final position and the same robot's
-in the ideal simulation (from the nominal starts); its time is the simulated time until
-the run converged. Then one factor at a time: the e-puck with one of its departures from
-the ideal removed, and sweeps of the radius, the tracking system's noise and its rate.
+mean over the five robots of the distance between its final position and the ideal
+simulation's (from the nominal starts) final configuration, the robots matched to its
+positions as near as they go; by robot, each robot against the same robot there. Its time is
+the simulated time until the run converged. Then one factor at a time: the e-puck with one
+of its departures from the ideal removed, sweeps of the radius, the tracking system's noise
+and its rate, and the runs that show why robots exchange places.
 
 Usage: python3 studies/epuck.py [--jobs N] [--seeds N]
 Trials are cached in out/study-epuck/ (one JSON file each); a rerun reuses them. The prose
@@ -61,6 +63,9 @@ SETTINGS += [("tracking rate [Hz]", str(f),
 # Where robots exchange places with each other (docs/studies.md): placed exactly, and with
 # loop 1 run every second rather than when the robot has settled.
 SETTINGS += [("mechanism", "nominal starts (no hand placement)", {"nominal": True}),
+             ("mechanism", "single integrator, nominal starts",
+              {"robots.kinematics": {"type": "single_integrator"}, "nominal": True}),
+             ("mechanism", "the ideal simulation, hand-placed starts", IDEAL),
              ("mechanism", "loop 1 every 1 s (periodic)",
               {"loops.mode": "periodic", "loops.loop1_period": 1.0})]
 
@@ -162,8 +167,11 @@ def main():
             if r["wall_contacts"] != 0:
                 raise study.StudyError(f"{label}: a body touched a wall")
     distance, times, by_id = rows[("e-puck", "e-puck (all of the below)")]
+    distinct = len({r["fingerprint"] for r in results[1:]})
     section = [
-        f"{len(seeds)} trials per setting (hand placement and tracking noise drawn per seed); "
+        f"{len(seeds)} trials per setting, {len(results) - 1} in all ({distinct} distinct runs: "
+        f"some settings are the e-puck's own); hand placement and tracking noise drawn per "
+        f"seed; "
         f"the ideal simulation converged in {results[0]['sim_time']:.1f} s. Distance from the "
         f"ideal: mean over the robots of the distance of each final position from the ideal "
         f"simulation's final configuration, the robots matched to its positions as near as "
