@@ -2,9 +2,10 @@
 
 namespace covsim {
 
-Vec2 ExternalLaw::target(const Robot& robot, const Knowledge&) {
+Vec2 ExternalLaw::target(const Robot& robot, const Knowledge& k) {
+  // Without a target the robot holds where it is, as it knows it.
   const auto it = targets_.find(robot.id);
-  return it == targets_.end() ? robot.position : it->second;
+  return it == targets_.end() ? k.points[k.self] : it->second;
 }
 
 LawEntry external_law_entry() {

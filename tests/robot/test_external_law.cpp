@@ -1,5 +1,5 @@
 // Targets set from outside (robot/external_law): the driver's targets, the robot's own
-// position until it sets one; never at rest.
+// point (its position as it knows it) until it sets one; never at rest.
 #include <catch2/catch.hpp>
 
 #include "robot/coverage_law_registry.hpp"
@@ -20,6 +20,9 @@ TEST_CASE("the external law returns what the driver set, else the robot's positi
   CHECK(law.target(r0, own(p, 0, Generators::positions)) == p[0]);
   law.set_target(1, {0.1, 0.1});  // the latest wins
   CHECK(law.target(r1, own(p, 1, Generators::positions)) == Vec2{0.1, 0.1});
+  // Where the robot is as it knows it (an estimate, with a localization): its own point.
+  const std::vector<Vec2> estimated{{0.21, 0.29}, {0.8, 0.3}};
+  CHECK(law.target(r0, own(estimated, 0, Generators::virtual_generators)) == estimated[0]);
   CHECK_FALSE(law.at_rest(r1, Tolerances{1.0, 1.0}));  // only the driver knows when it is done
   CHECK_FALSE(law.moves_virtual_generators());
 }
