@@ -7,7 +7,8 @@
 // figure to compare: CPU seconds per simulated second, which for these single-threaded runs
 // is the wall time on an idle core and, unlike wall time, holds still on a shared machine.
 // Decentralized runs also count `messages_per_robot_s`, the messages a robot reads per
-// simulated second. BM_ScaleRunBodies gives the robots bodies, BM_ScaleRunAvoidance ORCA too.
+// simulated second. BM_ScaleRunBodies gives the robots bodies, BM_ScaleRunAvoidance ORCA too;
+// BM_ScaleRunTracking gives them a tracking system's estimates.
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
@@ -88,6 +89,14 @@ void BM_ScaleRunAvoidance(benchmark::State& state) {
   run(state, parse(json));
 }
 
+// What a tracking system (robots.localization: 10 Hz frames, 2 mm noise) adds to BM_ScaleRun:
+// its frames, the estimates, and the planner's readings moved into the odometry's frame.
+void BM_ScaleRunTracking(benchmark::State& state) {
+  nlohmann::ordered_json json = scale_json(static_cast<std::size_t>(state.range(0)));
+  json["robots"]["localization"] = {{"type", "tracking"}};
+  run(state, parse(json));
+}
+
 void BM_DelaunayPerTick(benchmark::State& state) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   const covsim::Scenario s = parse(scale_json(static_cast<std::size_t>(state.range(0))));
@@ -108,4 +117,5 @@ BENCHMARK(BM_ScaleRun)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillis
 BENCHMARK(BM_ScaleRunDecentralized)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunBodies)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunAvoidance)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScaleRunTracking)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DelaunayPerTick)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
