@@ -1,6 +1,7 @@
 // Golden fingerprints of variants beyond the paper's ideal-network scenarios: lossy and
 // delayed networks of every model, range and line-of-sight limits, noisy and sampled
-// sensors, every planner and controller, and non-uniform densities. A change that alters
+// sensors, every planner and controller, non-uniform densities, and bodies, avoidance,
+// kinematics and localization. A change that alters
 // any of these runs changes its fingerprint: update them deliberately and say why in the
 // commit message. A refactor must leave every one unchanged.
 #include <catch2/catch.hpp>
@@ -79,6 +80,22 @@ const Variant kVariants[] = {
      R"({"network": {"loss": {"model": "bernoulli", "p": 0.1}},
          "loops": {"mode": "periodic", "loop1_period": 1.0}, "convergence": {"max_time": 40}})",
      "1346a52f9d4f5631"},
+    {"e-puck: bodies, ORCA, differential drive, tracking with latency", "epuck_u_shape.json", "{}",
+     "cf47376a435a7527"},
+    {"bodies, ORCA, unicycle with acceleration limits", "two_obstacles.json",
+     R"({"robots": {"radius": 0.03, "avoidance": {"type": "orca"},
+         "kinematics": {"type": "unicycle", "acceleration": 0.5}}})",
+     "efac030aec476cd7"},
+    {"odometry drift, Ω known", "u_shape.json",
+     R"({"robots": {"localization": {"type": "odometry", "drift": 0.01}},
+         "controller": {"projection": "known"}})",
+     "7c4259bccc3715c4"},
+    {"tracking with drift, decentralized under loss", "two_obstacles.json",
+     R"({"robots": {"localization": {"type": "tracking", "noise": 0.003, "drift": 0.002,
+         "latency": 0.05, "compensated": false}},
+         "network": {"loss": {"model": "bernoulli", "p": 0.2}},
+         "controller": {"projection": "known"}})",
+     "c14014b8ff05316c"},
 };
 
 Scenario variant(const Variant& v) {
