@@ -170,7 +170,7 @@ void CoverageController::loop1(std::uint32_t i) {
   // point (office, robot 28: settled beside a corner of a T-wall, 0.06 m from the
   // projection of a target that had moved 0.15 m, and never handed it).
   // Where it is, as far as it knows, and as near as it can tell (with a localization, not
-  // nearer than three standard deviations of its estimate's jitter).
+  // nearer than kReachDeviations standard deviations of its estimate's jitter).
   const Vec2 at = known_position(r);
   const double near = within_reach();
   const auto at_closest_point = [&](Vec2 goal, Vec2 closest) {
@@ -254,15 +254,16 @@ Vec2 CoverageController::in_planner_frame(Robot& r, Vec2 p) {
   return p - (localization_->estimate(r.id) - localization_->odometry(r.id));
 }
 
+double CoverageController::reach(double sigma) const {
+  return std::max(tol_.position, kReachDeviations * sigma);
+}
+
 double CoverageController::planner_reach() const {
-  return std::max(tol_.position, 3.5 * sensing_.position_sigma);
+  return reach(sensing_.position_sigma);
 }
 
 double CoverageController::within_reach() const {
-  // 3.5 standard deviations on each axis: a 2D Gaussian jump goes beyond with probability
-  // exp(-3.5² / 2), 0.2%.
-  return localization_ ? std::max(tol_.position, 3.5 * localization_->estimate_jitter(step_))
-                       : tol_.position;
+  return localization_ ? reach(localization_->estimate_jitter(step_)) : tol_.position;
 }
 
 void CoverageController::loop2(Kernel& k, std::uint32_t i) {
@@ -429,7 +430,7 @@ bool CoverageController::unreachable(const Robot& r) const {
   // fixes and drift moved it.
   const Vec2 p = r.planner_goal - (localization_->odometry(r.id) - r.position);
   const double margin =
-      std::max(within_reach(), 3.5 * localization_->odometry_jitter(r.path_length));
+      std::max(within_reach(), reach(localization_->odometry_jitter(r.path_length)));
   return !space.contains(p) || space.boundary_distance(p) <= margin;
 }
 

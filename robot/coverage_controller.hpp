@@ -193,6 +193,11 @@ class CoverageController {
   // How near its planner's goal a robot counts as there by where its planner believes it is
   // (every motion, however short, drifts an odometry).
   double planner_reach() const;
+  // The position tolerance, or kReachDeviations standard deviations (on each axis) of a
+  // position's jitter if more: a 2D Gaussian jump goes beyond 3.5 of them with probability
+  // exp(-3.5² / 2), 0.2%.
+  static constexpr double kReachDeviations = 3.5;
+  double reach(double sigma) const;
   void move_to(Robot& r, Vec2 next);
   // The robot is at its planner's step, which ended with this status; false: the run stops.
   bool arrive(Kernel& k, Robot& r, PlanStatus status);

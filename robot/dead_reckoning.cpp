@@ -6,6 +6,14 @@
 
 namespace covsim {
 
+ParamSpec drift_parameter(double default_value) {
+  return ParamSpec::number("drift", "m^½",
+                           "the odometry's standard deviation on each axis per √m travelled")
+      .non_negative()
+      .at_most(1.0)
+      .defaults_to(default_value);
+}
+
 DeadReckoning::DeadReckoning(const LocalizationContext& context, DeadReckoningConfig config)
     : kernel_(context.kernel), position_(context.position), config_(config) {
   for (std::uint32_t i = 0; i < context.starts.size(); ++i) {

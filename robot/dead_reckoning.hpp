@@ -27,6 +27,9 @@ struct DeadReckoningConfig {
   bool compensated = true;            // a late fix is moved on by the odometry since its capture
 };
 
+// The odometry's drift, a parameter of each localization built on this one.
+ParamSpec drift_parameter(double default_value);
+
 class DeadReckoning final : public Localization {
  public:
   DeadReckoning(const LocalizationContext& context, DeadReckoningConfig config);

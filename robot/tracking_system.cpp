@@ -28,12 +28,7 @@ LocalizationEntry tracking_system_entry() {
                          "robot's estimate lags by its speed times the latency, and up to a "
                          "loop-2 period more)")
           .defaults_to(true),
-      ParamSpec::number("drift", "m^½",
-                        "the odometry's standard deviation on each axis per √m travelled, "
-                        "between fixes")
-          .non_negative()
-          .at_most(1.0)
-          .defaults_to(0.0)};
+      drift_parameter(0.0)};
   e.make = [](const LocalizationContext& c, const Params& p) -> std::unique_ptr<Localization> {
     DeadReckoningConfig d;
     d.rate = p.number("rate");

@@ -63,6 +63,14 @@ struct CorridorRun {
   }
 };
 
+// A shipped scenario whose robots have bodies of this radius and ORCA between them.
+nlohmann::json with_orca(const std::string& name, double radius) {
+  nlohmann::json j = paper(name).json;
+  j["robots"]["radius"] = radius;
+  j["robots"]["avoidance"] = {{"type", "orca"}};
+  return j;
+}
+
 }  // namespace
 
 TEST_CASE("with ORCA no two bodies overlap and the runs converge", "[avoidance]") {
@@ -72,10 +80,7 @@ TEST_CASE("with ORCA no two bodies overlap and the runs converge", "[avoidance]"
                                      {"two_obstacles.json", 0.03},
                                      {"dead_ends.json", 0.05}}) {
     INFO(name);
-    nlohmann::json j = paper(name).json;
-    j["robots"]["radius"] = radius;
-    j["robots"]["avoidance"] = {{"type", "orca"}};
-    const Scenario s = parse_beside_paper(j, name);
+    const Scenario s = parse_beside_paper(with_orca(name, radius), name);
     Distances d(s);
     const CoverageOutcome out = run_coverage(s, &d);
     CHECK(out.stop_reason == "converged");
@@ -95,9 +100,7 @@ TEST_CASE("differential drives with ORCA converge without contact, dead ends too
   // walls and the bodies leave.
   for (const auto& [name, radius] : {std::pair{"u_shape.json", 0.02}, {"dead_ends.json", 0.05}}) {
     INFO(name);
-    nlohmann::json j = paper(name).json;
-    j["robots"]["radius"] = radius;
-    j["robots"]["avoidance"] = {{"type", "orca"}};
+    nlohmann::json j = with_orca(name, radius);
     j["robots"]["kinematics"] = {{"type", "differential_drive"}};
     const Scenario s = parse_beside_paper(j, name);
     Distances d(s);
