@@ -1,11 +1,20 @@
 #pragma once
 // What a robot broadcasts: its state as of the send time.
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #include "core/sim_time.hpp"
 #include "core/vec2.hpp"
 
 namespace covsim {
+
+// The map readings a broadcast carries (robot/mapping.hpp): their run-wide numbers, and their
+// size on the air (beside the state entry).
+struct MapPayload {
+  std::shared_ptr<const std::vector<std::uint32_t>> scans;
+  std::uint32_t bytes = 0;
+};
 
 struct StateMessage {
   std::uint32_t sender = 0;
@@ -13,6 +22,7 @@ struct StateMessage {
   SimTime sent;
   Vec2 virtual_generator;
   Vec2 position;
+  MapPayload map;  // robots that map Ω: readings of the sender's map
 };
 
 // Its size on the air, above the MAC, as a robot would pack it: a header (message type and
@@ -23,5 +33,7 @@ struct StateMessage {
 inline constexpr std::uint32_t kMessageHeaderBytes = 4;
 inline constexpr std::uint32_t kStateEntryBytes = 4 + 8 + 8 + 16 + 16;
 inline constexpr std::uint32_t kStateMessageBytes = kMessageHeaderBytes + kStateEntryBytes;
+// The largest message a simulated radio carries whole: 802.11's largest MSDU.
+inline constexpr std::uint32_t kMaxRadioMessageBytes = 2304;
 
 }  // namespace covsim

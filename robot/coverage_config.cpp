@@ -26,6 +26,20 @@ std::optional<ProjectionPolicy> projection_named(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view to_string(KnownEnvironment k) {
+  for (const auto& [known, name] : kKnownEnvironments) {
+    if (known == k) return name;
+  }
+  return "unknown";
+}
+
+std::optional<KnownEnvironment> known_environment_named(std::string_view name) {
+  for (const auto& [known, n] : kKnownEnvironments) {
+    if (n == name) return known;
+  }
+  return std::nullopt;
+}
+
 namespace {
 using Key = ConfigKey<CoverageConfig>;
 
@@ -82,6 +96,58 @@ ConfigKeys<CoverageConfig> projection_keys() {
               [](const CoverageConfig& c, const RunShape&) -> std::optional<ParamValue> {
                 return std::string(to_string(c.projection));
               }}};
+}
+
+ConfigKeys<CoverageConfig> environment_keys() {
+  const CoverageConfig d;
+  std::vector<std::string> names;
+  for (const auto& [known, name] : kKnownEnvironments)
+    names.emplace_back(name);
+  return {Key{ParamSpec::choice("known", names,
+                                "what the robots know of Ω beforehand: \"full\" (the paper's), "
+                                "\"boundary\" (the outer ring; holes are found by sensing) or "
+                                "\"none\" (the bounding box; the outer ring's pockets and the "
+                                "holes are found by sensing). See \"mapping\"")
+                  .defaults_to(std::string(to_string(d.mapping.known))),
+              [](CoverageConfig& c, const ParamValue& v) {
+                c.mapping.known = *known_environment_named(std::get<std::string>(v));
+              },
+              [](const CoverageConfig& c, const RunShape&) -> std::optional<ParamValue> {
+                return std::string(to_string(c.mapping.known));
+              }}};
+}
+
+ConfigKeys<CoverageConfig> mapping_keys() {
+  const CoverageConfig d;
+  return {member_key<CoverageConfig>(
+              ParamSpec::number("spacing", "m",
+                                "a robot keeps a range reading for its map each time it has "
+                                "travelled this far, and where it settles")
+                  .positive()
+                  .defaults_to(d.mapping.spacing),
+              &CoverageConfig::mapping, &MappingConfig::spacing),
+          member_key<CoverageConfig>(
+              ParamSpec::number("max_bytes", "bytes",
+                                "map bytes a broadcast carries at most: its newest readings "
+                                "first, then older ones again in turn (decentralized runs)")
+                  .at_least(64)
+                  .at_most(65536)
+                  .defaults_to(d.mapping.max_bytes),
+              &CoverageConfig::mapping, &MappingConfig::max_bytes),
+          member_key<CoverageConfig>(
+              ParamSpec::number("cells", "cells",
+                                 "cells of the known-area lattice across Ω's bounding box (the "
+                                 "measured area is exact to a band one cell wide)")
+                  .at_least(8)
+                  .at_most(4096)
+                  .defaults_to(d.mapping.cells),
+              &CoverageConfig::mapping, &MappingConfig::cells),
+          member_key<CoverageConfig>(
+              ParamSpec::boolean("compare_known",
+                                 "also run the scenario with Ω known from the same starts and "
+                                 "seed, for mapping.cost_ratio")
+                  .defaults_to(d.mapping.compare_known),
+              &CoverageConfig::mapping, &MappingConfig::compare_known)};
 }
 
 ConfigKeys<CoverageConfig> sensor_keys() {

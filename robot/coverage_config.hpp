@@ -63,6 +63,30 @@ inline constexpr std::array<std::pair<ProjectionPolicy, std::string_view>, 2> kP
 std::string_view to_string(ProjectionPolicy p);
 std::optional<ProjectionPolicy> projection_named(std::string_view name);
 
+// What the robots know of Ω beforehand (environment.known).
+enum class KnownEnvironment {
+  full,      // Ω itself: the paper's setting
+  boundary,  // Ω's outer ring; its holes are found by sensing
+  none,      // Ω's bounding box; the outer ring's pockets and the holes are found by sensing
+};
+inline constexpr std::array<std::pair<KnownEnvironment, std::string_view>, 3> kKnownEnvironments{
+    {{KnownEnvironment::full, "full"},
+     {KnownEnvironment::boundary, "boundary"},
+     {KnownEnvironment::none, "none"}}};
+std::string_view to_string(KnownEnvironment k);
+std::optional<KnownEnvironment> known_environment_named(std::string_view name);
+
+// How robots that do not know Ω map it (robot/mapping.hpp).
+struct MappingConfig {
+  KnownEnvironment known = KnownEnvironment::full;
+  double spacing = 0.1;              // m travelled between range readings kept for the map
+  double max_bytes = 1024;           // map bytes a broadcast carries at most
+  double cells = 200;                // known-area lattice cells across Ω's box
+  bool compare_known = true;         // also run with Ω known, for the cost ratio
+  bool unknown() const { return known != KnownEnvironment::full; }
+  friend bool operator==(const MappingConfig&, const MappingConfig&) = default;
+};
+
 // The robots' spacing: the side of a square of Ω's area shared out among n robots.
 double robot_spacing(const Environment& env, std::size_t n);
 
@@ -103,6 +127,7 @@ struct CoverageConfig {
   // rest of a sample.
   std::uint64_t algebraic_connectivity_robots = 2000;
   NetworkConfig network;
+  MappingConfig mapping;
 };
 
 // The scenario's keys for these settings, each declared once with its schema (defaults
@@ -115,5 +140,8 @@ ConfigKeys<CoverageConfig> loop_keys();
 ConfigKeys<CoverageConfig> convergence_keys();
 ConfigKeys<CoverageConfig> metrics_keys();
 ConfigKeys<NetworkConfig> network_keys();
+// "environment": {"known"}, and "mapping".
+ConfigKeys<CoverageConfig> environment_keys();
+ConfigKeys<CoverageConfig> mapping_keys();
 
 }  // namespace covsim

@@ -16,6 +16,7 @@
 #include "robot/ideal_view.hpp"
 #include "robot/kinematics_registry.hpp"
 #include "robot/localization_registry.hpp"
+#include "robot/mapping.hpp"
 #include "robot/networked_view.hpp"
 #include "robot/turn_then_drive.hpp"
 
@@ -70,10 +71,15 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   }
   state_ = std::make_unique<GeneratorState>(integrator_, starts);
   law_ = make_coverage_law(config_.law, LawContext{env, density, integrator_});
-  if (config_.network.channel.is_ideal()) {
+  const bool ideal = config_.network.channel.is_ideal();
+  if (config_.mapping.unknown())
+    mapping_ = std::make_unique<Mapping>(env, density, config_.radius, config_.sensor.range,
+                                         config_.mapping, starts.size(), ideal);
+  if (ideal) {
     view_ = std::make_unique<IdealView>(*state_);
   } else {
-    view_ = std::make_unique<NetworkedView>(kernel_, env, config_.network, *state_);
+    view_ = std::make_unique<NetworkedView>(kernel_, env, config_.network, *state_,
+                                            mapping_.get());
   }
   sensor_ = std::make_unique<SensorModel>(
       kernel_, [this](std::uint32_t i) -> const Environment& { return free_space(i); },
@@ -117,6 +123,10 @@ void CoverageController::start() {
   }
   sensor_->start(t0);
   if (localization_) localization_->start(t0);
+  if (mapping_) {
+    for (const Robot& r : robots_)
+      mapping_->start(r.id, r.position, t0);
+  }
   view_->motion_clock(t0 + config_.loop2_period, config_.loop2_period);
   view_->start(t0);
   kernel_.schedule_periodic(Period::from_ns(config_.sample_period.ns()), t0, sample_kind_,
@@ -149,14 +159,17 @@ void CoverageController::loop1(std::uint32_t i) {
                               ? Generators::virtual_generators
                               : law_->generators();
   r.virtual_target = guarded(i, "coverage law", config_.law.type, [&] {
-    const Vec2 t = law_->target(r, view_->knowledge(i, told));
+    Knowledge known = view_->knowledge(i, told);
+    // A robot that maps Ω computes its cell in Ω as it believes it.
+    if (mapping_) known.integrator = mapping_->belief(i).integrator.get();
+    const Vec2 t = law_->target(r, known);
     if (!is_finite(t))
       throw std::invalid_argument(fmt::format("a target must be finite, found ({}, {})", t.x, t.y));
     return t;
   });
   // Algorithm 2, lines 2-4: an obstacle boundary Voronoi region projects its target, onto
-  // the free space of the robot's body.
-  const Environment& space = free_space(i);
+  // the free space of the robot's body (as the robot believes it, when it maps Ω).
+  const Environment& space = mapping_ ? mapping_->free_space(i, r.position) : free_space(i);
   r.projected = !space.contains(r.virtual_target);
   r.real_target = r.projected ? space.closest_point(r.virtual_target) : r.virtual_target;
   // At its real target: for a projected target, at a closest point of Ω to the virtual one
@@ -177,13 +190,19 @@ void CoverageController::loop1(std::uint32_t i) {
     return distance(at, closest) <= near ||
            distance(at, goal) - distance(closest, goal) <= space.tolerance();
   };
+  // A robot that maps Ω may find a target unreachable before it knows the obstacle whole
+  // (the paper's Fig. 4, with an obstacle not yet mapped): its planner settled at the closest
+  // point it could reach, which the Lemma-2 check (arrive()) holds to Ω itself.
+  const bool discovered = mapping_ && r.status == PlanStatus::projected &&
+                          distance(r.virtual_target, r.assigned) <= tol_.position;
   const bool at_target =
-      r.projected ? at_closest_point(r.virtual_target, r.real_target) ||
-                        ((r.status == PlanStatus::projected || r.status == PlanStatus::reached) &&
-                         distance(r.virtual_target, r.assigned) <= tol_.position &&
-                         !space.contains(r.assigned) &&
-                         at_closest_point(r.assigned, space.closest_point(r.assigned)))
-                  : distance(r.real_target, at) <= near;
+      discovered ||
+      (r.projected ? at_closest_point(r.virtual_target, r.real_target) ||
+                         ((r.status == PlanStatus::projected || r.status == PlanStatus::reached) &&
+                          distance(r.virtual_target, r.assigned) <= tol_.position &&
+                          !space.contains(r.assigned) &&
+                          at_closest_point(r.assigned, space.closest_point(r.assigned)))
+                   : distance(r.real_target, at) <= near);
   r.stable = is_settled(r.status) && at_target &&
              guarded(i, "coverage law", config_.law.type, [&] { return law_->at_rest(r, tol_); });
   if (r.stable) return;
@@ -397,7 +416,9 @@ PlanStep CoverageController::planner_step(const Kernel& k, Robot& r) {
 }
 
 void CoverageController::move_to(Robot& r, Vec2 next) {
-  r.path_length += distance(r.position, next);
+  const double length = distance(r.position, next);
+  if (mapping_) mapping_->moved(r.id, next, length, kernel_.now());
+  r.path_length += length;
   r.position = next;
   if (near_) near_->moved(r.id, next);
   state_->move(Generators::positions, r.id, next);
@@ -407,6 +428,13 @@ void CoverageController::move_to(Robot& r, Vec2 next) {
 bool CoverageController::arrive(Kernel& k, Robot& r, PlanStatus status) {
   r.status = status;
   r.stable = false;
+  if (mapping_ && is_settled(status)) {
+    // Found unreachable a goal its map still places in free space: an obstacle not yet known
+    // whole (the paper's Fig. 4 without a map).
+    if (status == PlanStatus::projected && mapping_->free_space(r.id, r.position).contains(r.goal))
+      ++discoveries_;
+    mapping_->settled(r.id, r.position, k.now());
+  }
   if (config_.radius > 0.0 && space_->overlaps_boundary(r.position)) ++wall_contacts_;
   if (status == PlanStatus::projected && !unreachable(r)) {
     failure_ = PlannerFailure{r.id, k.now(), r.goal, r.position};

@@ -51,6 +51,7 @@
 namespace covsim {
 
 class CoverageController;
+class Mapping;
 class ReceiverGrid;
 
 // What stopped a run at once, and where: a robot, the time, its goal and its position.
@@ -134,6 +135,10 @@ class CoverageController {
   double localization_error_max() const { return localization_error_max_; }
   std::uint64_t fixes() const { return localization_ ? localization_->fixes() : 0; }
   const CellIntegrator& integrator() const { return integrator_; }
+  // Robots that do not know Ω: their maps; null when they know it.
+  const Mapping* mapping() const { return mapping_.get(); }
+  // Times a robot that maps Ω found unreachable a goal its map placed in free space.
+  std::uint64_t discoveries() const { return discoveries_; }
   const CoverageLaw& law() const { return *law_; }
   CoverageLaw& law() { return *law_; }
   const NeighborView& view() const { return *view_; }
@@ -240,6 +245,8 @@ class CoverageController {
   std::unique_ptr<CollisionAvoidance> avoidance_;  // unset: none
   std::unique_ptr<Kinematics> kinematics_;         // unset: the single integrator
   std::unique_ptr<Localization> localization_;     // unset: exact
+  std::unique_ptr<Mapping> mapping_;               // unset: Ω known (environment.known full)
+  std::uint64_t discoveries_ = 0;
   SensorSpec sensing_;  // what the planners are told of their sensing and localization
   double localization_error_sum_ = 0.0, localization_error_max_ = 0.0;
   std::uint64_t localization_steps_ = 0;

@@ -12,9 +12,10 @@ const VoronoiPartition* Knowledge::partition() const {
   return shared != nullptr ? &shared->partition(kind) : nullptr;
 }
 
-CellSummary own_cell_summary(const CellIntegrator& integrator, const Knowledge& k,
+CellSummary own_cell_summary(const CellIntegrator& law_integrator, const Knowledge& k,
                              ConvexPolygon* cell) {
-  if (const VoronoiPartition* p = k.partition()) {
+  const CellIntegrator& integrator = k.integrator != nullptr ? *k.integrator : law_integrator;
+  if (const VoronoiPartition* p = k.integrator != nullptr ? nullptr : k.partition()) {
     if (cell != nullptr) cell->assign(p->cell(k.self).begin(), p->cell(k.self).end());
     return p->summary(k.self);
   }

@@ -38,6 +38,9 @@ struct Knowledge {
   std::optional<std::uint64_t> version;
   // Otherwise, where the robot keeps its own cell between loop-1 updates (may be null).
   OwnCellCache* cache = nullptr;
+  // For a robot that maps Ω: its cells are of Ω as it believes it (robot/mapping.hpp),
+  // not of the law's; no shared partition then.
+  const CellIntegrator* integrator = nullptr;
   // The shared partition, if there is one (computed on first use).
   const VoronoiPartition* partition() const;
 };
@@ -86,6 +89,9 @@ struct LawEntry : ComponentInfo {
   // Whether it computes its own targets (a coverage law proper); false for a law whose
   // targets a driving program sets (external), which comparisons of laws leave out.
   bool autonomous = true;
+  // Whether it needs Ω itself beyond cells of what a robot believes Ω is (geodesic
+  // distances): refused for robots that do not know Ω.
+  bool needs_map = false;
   LawContract contract;
 };
 

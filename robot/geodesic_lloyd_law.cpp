@@ -29,6 +29,7 @@ LawEntry geodesic_lloyd_entry() {
   };
   LawEntry e;
   e.name = "geodesic_lloyd";
+  e.needs_map = true;
   e.description = "Lloyd under the geodesic distance in Ω, a damped step toward its Lloyd point";
   e.params = {ParamSpec::number("resolution", "m", "spacing of the integration lattice")
                   .greater_than(0)

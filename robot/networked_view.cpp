@@ -8,10 +8,11 @@
 namespace covsim {
 
 NetworkedView::NetworkedView(Kernel& kernel, const Environment& env, const NetworkConfig& config,
-                             const GeneratorState& state)
+                             const GeneratorState& state, MapExchange* maps)
     : kernel_(kernel),
       config_(config),
       state_(state),
+      maps_(maps),
       channel_(std::make_unique<Channel>(config.channel, kernel.seed(), env)) {
   const std::vector<Vec2>& positions = state.points(Generators::positions);
   const std::size_t n = positions.size();
@@ -96,8 +97,12 @@ SimTime NetworkedView::advance_to(Kernel& k, SimTime t, SimTime limit) {
   std::sort(sends.begin(), sends.end(), [](const Announced& a, const Announced& b) {
     return a.at != b.at ? a.at < b.at : a.sender < b.sender;
   });
+  // Announced ahead of their content: a robot that maps Ω reserves the most map bytes a
+  // broadcast carries in each.
+  const auto bytes = static_cast<std::uint32_t>(kStateMessageBytes +
+                                                (maps_ != nullptr ? maps_->payload_limit() : 0));
   for (const Announced& s : sends)
-    session_->broadcast(s.sender, s.seq, kStateMessageBytes, s.at);
+    session_->broadcast(s.sender, s.seq, bytes, s.at);
   announced_to_ = until;
   receptions_.clear();
   session_->advance(until, receptions_);
@@ -129,6 +134,7 @@ void NetworkedView::receive_radio(std::uint32_t j, std::uint32_t index) {
   const StateMessage& m = history[r.seq - history.front().seq];
   ++totals_.delivered;
   latency_.add((kernel_.now() - m.sent).seconds());
+  if (maps_ != nullptr) maps_->merge(j, m.map);
   tables_[j].update(m);
 }
 
@@ -190,8 +196,9 @@ Knowledge NetworkedView::knowledge(std::uint32_t i, Generators kind) const {
 
 void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {
   const std::vector<Vec2>& positions = state_.points(Generators::positions);
-  const StateMessage m{i, next_seq_[i]++, k.now(), state_.points(Generators::virtual_generators)[i],
-                       positions[i]};
+  StateMessage m{i, next_seq_[i]++, k.now(), state_.points(Generators::virtual_generators)[i],
+                 positions[i], {}};
+  if (maps_ != nullptr) m.map = maps_->pack(i);
   const auto n = static_cast<std::uint32_t>(tables_.size());
   totals_.sent += n - 1;
   if (session_) {
@@ -260,6 +267,7 @@ void NetworkedView::transmit(Kernel& k, std::uint32_t slot, std::uint32_t i, std
 void NetworkedView::receive(std::uint32_t j, std::uint32_t slot) {
   const StateMessage& m = in_flight_[slot].message;
   latency_.add((kernel_.now() - m.sent).seconds());
+  if (maps_ != nullptr) maps_->merge(j, m.map);
   tables_[j].update(m);
   if (--in_flight_[slot].deliveries == 0) free_slots_.push_back(slot);
 }

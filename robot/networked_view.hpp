@@ -29,14 +29,16 @@
 #include "net/receiver_grid.hpp"
 #include "robot/coverage_config.hpp"
 #include "robot/generator_state.hpp"
+#include "robot/map_exchange.hpp"
 #include "robot/neighbor_view.hpp"
 
 namespace covsim {
 
 class NetworkedView final : public NeighborView, private KernelPeer {
  public:
+  // maps: robots that map Ω, whose broadcasts carry map readings (null: none).
   NetworkedView(Kernel& kernel, const Environment& env, const NetworkConfig& config,
-                const GeneratorState& state);
+                const GeneratorState& state, MapExchange* maps = nullptr);
   ~NetworkedView() override;
   NetworkedView(const NetworkedView&) = delete;
   NetworkedView& operator=(const NetworkedView&) = delete;
@@ -74,6 +76,7 @@ class NetworkedView final : public NeighborView, private KernelPeer {
   Kernel& kernel_;
   NetworkConfig config_;
   const GeneratorState& state_;
+  MapExchange* maps_;
   std::unique_ptr<Channel> channel_;
   std::unique_ptr<ChannelSession> session_;     // a simulated radio; null: channel_ decides
   std::vector<std::deque<StateMessage>> sent_;  // per sender, with a session

@@ -10,6 +10,7 @@
 #include "geometry/geometry_error.hpp"
 #include "geometry/placement.hpp"
 #include "geometry/ring_validation.hpp"
+#include "net/message.hpp"
 #include "scenarios/component_reader.hpp"
 #include "scenarios/component_sections.hpp"
 #include "scenarios/input_file.hpp"
@@ -28,7 +29,7 @@ constexpr double kMinExtent = 1e-3;        // m: Ω's box diagonal
 constexpr double kMinRelativeEdge = 1e-6;  // an edge against Ω's box diagonal
 
 std::shared_ptr<const Environment> read_environment(const JsonValue& v) {
-  v.only_keys({"outer", "holes"});
+  v.only_keys({"outer", "holes", "known"});
   std::vector<Vec2> outer = v.at("outer").points();
   std::vector<std::vector<Vec2>> holes;
   if (auto h = v.find("holes")) {
@@ -358,6 +359,44 @@ void check_limits(const JsonValue& root, const Scenario& s) {
   }
 }
 
+// Robots that do not know Ω (environment.known) map it from what they sense: every part
+// that would be told Ω, or needs a map from exact readings, is refused beside it.
+void check_mapping(const JsonValue& root, const CoverageConfig& c) {
+  if (!c.mapping.unknown()) {
+    // Its defaults may be stated (a described scenario states them); others would be ignored.
+    if (auto m = root.find("mapping"); m && !(c.mapping == MappingConfig{}))
+      m->fail("applies only to robots that do not know Ω: set environment.known to "
+              "\"boundary\" or \"none\"");
+    return;
+  }
+  const JsonValue known = root.at("environment").at("known");
+  const PlannerEntry* planner = planner_registry().find(c.planner.type);
+  if (planner != nullptr && !planner->senses_only)
+    known.fail(fmt::format("robots that do not know Ω need a planner that plans from what it "
+                           "senses (tangent_bug); {} plans on a map of Ω",
+                           c.planner.type));
+  if (c.projection == ProjectionPolicy::known)
+    known.fail("controller.projection \"known\" projects targets onto Ω, which the robots do "
+               "not know: use \"discover\" (the default)");
+  if (const LawEntry* law = coverage_law_registry().find(c.law.type); law && law->needs_map)
+    known.fail(fmt::format("the {} law needs Ω's geodesic distances, which robots that do not "
+                           "know Ω cannot compute",
+                           c.law.type));
+  if (c.localization.type != LocalizationConfig{}.type)
+    known.fail(fmt::format("a map built from readings placed by {} localization (mapping with "
+                           "an uncertain position, SLAM) is not modelled: use exact localization",
+                           c.localization.type));
+  if (c.network.channel.model &&
+      kStateMessageBytes + c.mapping.max_bytes > kMaxRadioMessageBytes)
+    root.at("mapping").at("max_bytes").fail(fmt::format(
+        "a simulated radio carries messages of at most {} bytes, {} of them the state: at most "
+        "{} map bytes",
+        kMaxRadioMessageBytes, kStateMessageBytes, kMaxRadioMessageBytes - kStateMessageBytes));
+  if (c.sensor.noise_sigma > 0.0)
+    known.fail("a map built from noisy ranges (which walls a reading saw is then uncertain) is "
+               "not modelled: remove sensor.noise");
+}
+
 // The keys a scenario file may have at its top: the environment, the seed, and the sections.
 std::vector<std::string> top_level_keys() {
   std::vector<std::string> keys{"environment", "seed"};
@@ -388,6 +427,7 @@ Scenario parse_scenario(const nlohmann::json& json, const std::string& source,
   if (auto r = root.find("robots"))
     s.robot_positions = read_robots(*r, *s.environment, s.coverage.radius, s.seed, s.draw);
   read_components(root, s.coverage);
+  check_mapping(root, s.coverage);
   check_limits(root, s);
   // Checks that need the environment (grids too fine for it) fail here, not at a run's start.
   const auto check = [&](const auto& entry, const Params& params, const char* key) {

@@ -22,6 +22,14 @@ std::vector<ScenarioSection> make_sections() {
                  "the robots: how they start and how fast they move",
                  joined(lift(robot_draw_keys(), &Scenario::draw), coverage(motion_keys())),
                  {"positions", "count", "start"}});
+  out.push_back({"environment",
+                 "Ω (outer ring and holes) and what the robots know of it",
+                 coverage(environment_keys()),
+                 {"outer", "holes"}});
+  out.push_back({"mapping",
+                 "how robots that do not know Ω (environment.known) map it",
+                 coverage(mapping_keys()),
+                 {}});
   out.push_back({"controller",
                  "the coverage law (covsim list laws); its key for every type",
                  coverage(projection_keys()),

@@ -73,6 +73,20 @@ struct CoverageOutcome {
   // Localization (CoverageController::localization_error_mean and the rest): zeros when exact.
   double localization_error_mean = 0.0, localization_error_max = 0.0;
   std::uint64_t fixes = 0;
+  // Mapping (robot/mapping.hpp): what the robots knew of Ω beforehand, and, when they did not
+  // know it, the fraction of Ω's free area known at the end (merged and the least-informed
+  // robot's), when the merged map reached 90% and 100% of it (NaN: never), the disagreement
+  // between robots' maps, map bytes broadcast, readings kept, obstacles (holes and pockets)
+  // and how many the least-informed robot knew, goals found unreachable while the robot's map
+  // placed them in free space (CoverageController::discoveries), and the final real cost with Ω known (NaN:
+  // not compared).
+  std::string known = "full";
+  double known_fraction = 1.0, known_fraction_min = 1.0;
+  double mapping_time_90 = 0.0, mapping_time_100 = 0.0;
+  double map_disagreement = 0.0;
+  std::uint64_t map_bytes = 0, scans = 0, obstacles = 0, obstacles_known_min = 0, discoveries = 0;
+  double cost_known = NAN;
+  double cost_ratio() const { return cost_real / cost_known; }
   // Wall-clock seconds spent in planner steps, and how many steps: the only measures besides
   // wall times that vary between runs.
   double planner_seconds = 0.0;

@@ -8,6 +8,7 @@
 #include "core/trace.hpp"
 #include "io/interrupt.hpp"
 #include "robot/external_law.hpp"
+#include "robot/mapping.hpp"
 #include "scenarios/scenario_error.hpp"
 
 namespace covsim {
@@ -37,7 +38,7 @@ class Simulation::Observers final : public CoverageObserver {
 
 Simulation::Simulation(const Scenario& scenario, std::optional<std::uint64_t> seed,
                        const PlannerMaker& make_planner, TraceSink* trace)
-    : scenario_(scenario), observers_(std::make_unique<Observers>()) {
+    : scenario_(scenario), observers_(std::make_unique<Observers>()), make_planner_(make_planner) {
   if (seed) scenario_ = with_seed(scenario_, *seed);  // redraws what the seed draws
   if (scenario_.robot_positions.empty()) {
     throw ScenarioError(scenario_.source +
@@ -69,6 +70,13 @@ void Simulation::add_observer(CoverageObserver* o) {
 void Simulation::finish() {
   finished_ = true;
   observers_->on_finish(kernel_->now(), *controller_);
+  const MappingConfig& m = scenario_.coverage.mapping;
+  if (m.unknown() && m.compare_known) {
+    // The reference for mapping.cost_ratio: the same robots, starts and seed, Ω known.
+    Scenario known = scenario_;
+    known.coverage.mapping = MappingConfig{};
+    cost_known_ = Simulation(known, std::nullopt, make_planner_).run().cost_real;
+  }
 }
 
 template <class F>
@@ -182,6 +190,22 @@ CoverageOutcome Simulation::outcome() const {
   out.localization_error_mean = c.localization_error_mean();
   out.localization_error_max = c.localization_error_max();
   out.fixes = c.fixes();
+  if (const Mapping* m = c.mapping()) {
+    out.known = std::string(to_string(c.config().mapping.known));
+    out.known_fraction = m->known_fraction();
+    out.known_fraction_min = 1.0;
+    for (std::uint32_t i = 0; i < c.robots().size(); ++i)
+      out.known_fraction_min = std::min(out.known_fraction_min, m->known_fraction(i));
+    out.mapping_time_90 = m->time_to_90() ? m->time_to_90()->seconds() : NAN;
+    out.mapping_time_100 = m->time_to_100() ? m->time_to_100()->seconds() : NAN;
+    out.map_disagreement = m->disagreement();
+    out.map_bytes = m->bytes_sent();
+    out.scans = m->scans().size();
+    out.obstacles_known_min = m->elements_known_min();
+    out.obstacles = m->elements();
+    out.cost_known = cost_known_;
+    out.discoveries = c.discoveries();
+  }
   out.planner_seconds = planner_totals_.seconds;
   out.planner_steps = planner_totals_.steps;
   return out;

@@ -3,6 +3,7 @@
 // (run_until), or to its end (run), which is what run_coverage and `covsim run` do. However
 // it is driven, the same scenario and seed give the same events and the same fingerprint.
 // The run ends when it converges, a planner fails, every robot is stuck, or at max_time.
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -60,6 +61,10 @@ class Simulation {
   PlannerTotals planner_totals_;
   std::unique_ptr<Observers> observers_;
   std::unique_ptr<CoverageController> controller_;
+  PlannerMaker make_planner_;
+  // Robots that do not know Ω (mapping.compare_known): the final real cost of the same run
+  // with Ω known, from the same starts and seed (NaN: not run).
+  double cost_known_ = NAN;
   bool started_ = false;
   bool finished_ = false;
   std::optional<std::string> failed_;

@@ -365,6 +365,82 @@ const std::vector<Measure>& measures() {
           .later(),
       member("localization.fixes", K::integer, "", "tracking fixes the robots received", &O::fixes)
           .later(),
+      member("mapping.known", K::text, "",
+             "what the robots knew of Ω beforehand: full, boundary or none (environment.known)",
+             &O::known)
+          .in_runs(40, "known")
+          .later(),
+      member("mapping.known_fraction", K::number, "",
+             "fraction of Ω's free area known at the end, over every robot's map (1 when Ω was "
+             "known)",
+             &O::known_fraction)
+          .in_runs(41, "known_fraction")
+          .in_summary()
+          .later(),
+      member("mapping.known_fraction_min", K::number, "",
+             "the least fraction of Ω's free area one robot's map held at the end",
+             &O::known_fraction_min)
+          .later(),
+      outcome(
+          "mapping.time_to_90_percent", K::number, "s",
+          "when the robots' maps together first held 90% of Ω's free area (0 when Ω was known; "
+          "null: never)",
+          [](const O& o) { return number_or_null(o.mapping_time_90); },
+          [](O& o, const nlohmann::json& j) {
+            o.mapping_time_90 = j.is_null() ? NAN : j.get<double>();
+          })
+          .in_runs(42, "mapping_time_90")
+          .in_summary()
+          .later(),
+      outcome(
+          "mapping.time_to_100_percent", K::number, "s",
+          "when they first held all of it, to the lattice's cells (null: never)",
+          [](const O& o) { return number_or_null(o.mapping_time_100); },
+          [](O& o, const nlohmann::json& j) {
+            o.mapping_time_100 = j.is_null() ? NAN : j.get<double>();
+          })
+          .later(),
+      member("mapping.disagreement", K::number, "",
+             "mean over the robots of the fraction of Ω's free area some robot knew and it did "
+             "not, at the end (0 with one shared map)",
+             &O::map_disagreement)
+          .in_runs(43, "map_disagreement")
+          .in_summary()
+          .later(),
+      member("mapping.bytes", K::integer, "bytes",
+             "map bytes broadcast (each broadcast once, whatever its receivers)", &O::map_bytes)
+          .in_runs(44, "map_bytes")
+          .in_summary()
+          .later(),
+      member("mapping.scans", K::integer, "", "range readings kept for the maps", &O::scans)
+          .later(),
+      member("mapping.obstacles", K::integer, "",
+             "obstacles to find: holes, and with known none the pockets of the outer ring",
+             &O::obstacles)
+          .later(),
+      member("mapping.obstacles_known_min", K::integer, "",
+             "how many of them the least-informed robot knew whole at the end",
+             &O::obstacles_known_min)
+          .later(),
+      member("mapping.discoveries", K::integer, "",
+             "times a robot's planner found a goal unreachable that its map placed in free space "
+             "(an obstacle not yet known whole: the paper's Fig. 4 without a map)",
+             &O::discoveries)
+          .later(),
+      outcome(
+          "mapping.cost_known", K::number, kCostUnit,
+          "final real cost H of the same run with Ω known (mapping.compare_known; null: not run)",
+          [](const O& o) { return number_or_null(o.cost_known); },
+          [](O& o, const nlohmann::json& j) { o.cost_known = j.is_null() ? NAN : j.get<double>(); })
+          .later(),
+      outcome(
+          "mapping.cost_ratio", K::number, "",
+          "final real cost over mapping.cost_known (null: not compared)",
+          [](const O& o) { return number_or_null(o.cost_ratio()); },
+          [](O&, const nlohmann::json&) {})
+          .in_runs(45, "cost_ratio")
+          .in_summary()
+          .later(),
       member("planner.steps", K::integer, "", "planner steps taken", &O::planner_steps),
       outcome(
           "planner.step_time_us", K::number, "µs",

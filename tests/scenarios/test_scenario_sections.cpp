@@ -199,6 +199,8 @@ TEST_CASE("every key set away from its default is described and loads back the s
       // separation goes with drawn robots, jitter is drawn already when written back.
       if (section.path == "robots" && name != "max_speed") continue;
       if (name == "mode") continue;
+      // Mapping refuses the known projection and range noise set here: its own test below.
+      if (section.path == "environment" || section.path == "mapping") continue;
       const nlohmann::json v = other_value(k.spec);
       const auto dot = name.find('.');
       if (dot == std::string::npos)

@@ -1,0 +1,97 @@
+#include "geometry/known_lattice.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <stdexcept>
+
+#include "geometry/environment.hpp"
+
+namespace covsim {
+
+KnownLattice::KnownLattice(const Box& box, std::uint32_t cells) {
+  if (cells == 0 || box.empty()) throw std::invalid_argument("a lattice needs cells and a box");
+  const Vec2 size = box.size();
+  cell_ = std::max(size.x, size.y) / cells;
+  nx_ = std::max(1, static_cast<std::int32_t>(std::ceil(size.x / cell_ - 1e-9)));
+  ny_ = std::max(1, static_cast<std::int32_t>(std::ceil(size.y / cell_ - 1e-9)));
+  origin_ = box.lo;
+  bits_.assign((static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) + 63) / 64, 0);
+}
+
+KnownLattice KnownLattice::of_free_space(const Environment& env, std::uint32_t cells) {
+  KnownLattice l(env.bounds(), cells);
+  for (std::int32_t j = 0; j < l.ny_; ++j)
+    for (std::int32_t i = 0; i < l.nx_; ++i)
+      if (env.locate(l.centre(i, j))) l.set(i, j);
+  return l;
+}
+
+std::uint64_t KnownLattice::fill(const std::vector<Vec2>& polygon) {
+  if (polygon.size() < 3) return 0;
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Vec2& p : polygon) {
+    lo = std::min(lo, p.y);
+    hi = std::max(hi, p.y);
+  }
+  // Rows whose centre line crosses the polygon's extent.
+  const auto j0 = std::max<std::int32_t>(
+      0, static_cast<std::int32_t>(std::floor((lo - origin_.y) / cell_ - 0.5)));
+  const auto j1 = std::min<std::int32_t>(
+      ny_ - 1, static_cast<std::int32_t>(std::ceil((hi - origin_.y) / cell_ - 0.5)));
+  std::uint64_t added = 0;
+  std::vector<double> xs;
+  for (std::int32_t j = j0; j <= j1; ++j) {
+    const double y = origin_.y + (j + 0.5) * cell_;
+    xs.clear();
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const Vec2 a = polygon[k], b = polygon[(k + 1) % polygon.size()];
+      // Half-open in y: a vertex on the line counts once.
+      if ((a.y <= y) == (b.y <= y)) continue;
+      xs.push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+    }
+    std::sort(xs.begin(), xs.end());
+    for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
+      // Cells whose centre x lies in [xs[k], xs[k + 1]].
+      const auto i0 =
+          std::max<std::int32_t>(0, static_cast<std::int32_t>(
+                                        std::ceil((xs[k] - origin_.x) / cell_ - 0.5)));
+      const auto i1 = std::min<std::int32_t>(
+          nx_ - 1,
+          static_cast<std::int32_t>(std::floor((xs[k + 1] - origin_.x) / cell_ - 0.5)));
+      for (std::int32_t i = i0; i <= i1; ++i) {
+        if (!at(i, j)) {
+          set(i, j);
+          ++added;
+        }
+      }
+    }
+  }
+  return added;
+}
+
+std::uint64_t KnownLattice::merge(const KnownLattice& other) {
+  if (other.bits_.size() != bits_.size()) throw std::invalid_argument("lattices differ");
+  std::uint64_t added = 0;
+  for (std::size_t k = 0; k < bits_.size(); ++k) {
+    added += static_cast<std::uint64_t>(std::popcount(other.bits_[k] & ~bits_[k]));
+    bits_[k] |= other.bits_[k];
+  }
+  return added;
+}
+
+std::uint64_t KnownLattice::count() const {
+  std::uint64_t n = 0;
+  for (const std::uint64_t w : bits_)
+    n += static_cast<std::uint64_t>(std::popcount(w));
+  return n;
+}
+
+std::uint64_t KnownLattice::common(const KnownLattice& other) const {
+  std::uint64_t n = 0;
+  for (std::size_t k = 0; k < bits_.size(); ++k)
+    n += static_cast<std::uint64_t>(std::popcount(bits_[k] & other.bits_[k]));
+  return n;
+}
+
+}  // namespace covsim

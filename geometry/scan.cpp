@@ -1,0 +1,113 @@
+#include "geometry/scan.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace covsim {
+
+namespace {
+
+constexpr double kTurn = 2.0 * std::numbers::pi;
+
+double angle_of(Vec2 o, Vec2 p) {
+  return std::atan2(p.y - o.y, p.x - o.x);
+}
+
+// The counter-clockwise angle from direction a to direction b about o, in [0, 2π).
+double turn_between(Vec2 o, Vec2 a, Vec2 b) {
+  double t = angle_of(o, b) - angle_of(o, a);
+  while (t < 0.0)
+    t += kTurn;
+  while (t >= kTurn)
+    t -= kTurn;
+  return t;
+}
+
+// The fan's vertices for the directions from b's to a's (counter-clockwise) where no piece
+// lies: free to the range (chords of its circle) when the reading saw no wall there, else
+// nothing beyond the origin (the robot stands on the boundary and looks into the wall).
+void fill_gap(const Environment& env, Vec2 o, double range, Vec2 b, Vec2 a, double gap,
+              std::vector<Vec2>& fan) {
+  const double from = angle_of(o, b);
+  const double mid = from + 0.5 * gap;
+  const Vec2 dir{std::cos(mid), std::sin(mid)};
+  if (!std::isfinite(range) || env.ray_cast(o, dir, range)) {
+    fan.push_back(o);
+    return;
+  }
+  const auto at = [&](double angle) {
+    return Vec2{o.x + range * std::cos(angle), o.y + range * std::sin(angle)};
+  };
+  if (distance(o, b) < range) fan.push_back(at(from));
+  const double step = kTurn / kFanChordsPerTurn;
+  const int chords = static_cast<int>(std::ceil(gap / step));
+  for (int k = 1; k < chords; ++k)
+    fan.push_back(at(from + gap * k / chords));
+  if (distance(o, a) < range) fan.push_back(at(from + gap));
+}
+
+constexpr double kSameRay = 1e-9;  // rad: consecutive pieces on one ray (an occluding vertex)
+
+// The fan of pieces [first, last) of a reading: with every piece, the whole turn; else the
+// sector from the first piece's start to the next piece's (pieces[last], cyclically), so
+// that the parts of a split reading join.
+std::vector<Vec2> fan_of(const Environment& env, Vec2 o, double range,
+                         const std::vector<VisiblePiece>& pieces, std::size_t first,
+                         std::size_t last) {
+  std::vector<Vec2> fan;
+  if (range == 0.0) return fan;
+  const bool full_turn = first == 0 && last == pieces.size();
+  if (pieces.empty()) {
+    if (std::isfinite(range)) {
+      for (int k = 0; k < kFanChordsPerTurn; ++k) {
+        const double a = kTurn * k / kFanChordsPerTurn;
+        fan.push_back({o.x + range * std::cos(a), o.y + range * std::sin(a)});
+      }
+    }
+    return fan;
+  }
+  if (!full_turn) fan.push_back(o);
+  for (std::size_t k = first; k < last; ++k) {
+    fan.push_back(pieces[k].a);
+    fan.push_back(pieces[k].b);
+    const Vec2 b = pieces[k].b, a = pieces[(k + 1) % pieces.size()].a;
+    if (b == a) continue;
+    const double gap = turn_between(o, b, a);
+    if (gap < kSameRay || gap > kTurn - kSameRay) continue;
+    fill_gap(env, o, range, b, a, gap, fan);
+  }
+  return fan;
+}
+
+}  // namespace
+
+Scan take_scan(const Environment& env, Vec2 origin, double range) {
+  Scan s;
+  s.origin = origin;
+  s.range = range;
+  if (range > 0.0) s.pieces = visible_boundary(env, origin, range).pieces;
+  s.fan = fan_of(env, origin, range, s.pieces, 0, s.pieces.size());
+  return s;
+}
+
+std::vector<Scan> split_scan(const Environment& env, Scan scan, std::uint32_t max_bytes) {
+  std::vector<Scan> out;
+  if (scan.bytes() <= max_bytes) {
+    out.push_back(std::move(scan));
+    return out;
+  }
+  const std::size_t per = std::max<std::size_t>(1, (max_bytes - 8) / (8 + 8 + 4));
+  for (std::size_t first = 0; first < scan.pieces.size(); first += per) {
+    Scan part;
+    part.origin = scan.origin;
+    part.range = scan.range;
+    const std::size_t last = std::min(scan.pieces.size(), first + per);
+    part.pieces.assign(scan.pieces.begin() + static_cast<std::ptrdiff_t>(first),
+                       scan.pieces.begin() + static_cast<std::ptrdiff_t>(last));
+    part.fan = fan_of(env, scan.origin, scan.range, scan.pieces, first, last);
+    out.push_back(std::move(part));
+  }
+  return out;
+}
+
+}  // namespace covsim

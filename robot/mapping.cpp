@@ -1,0 +1,172 @@
+#include "robot/mapping.hpp"
+
+#include <algorithm>
+
+namespace covsim {
+
+
+Mapping::Mapping(const Environment& env, const Density& density, double radius, double range,
+                 const MappingConfig& config, std::size_t robots, bool shared)
+    : env_(env),
+      density_(density),
+      radius_(radius),
+      range_(range),
+      config_(config),
+      robots_(robots),
+      elements_(map_elements(env, config.known == KnownEnvironment::none)),
+      travelled_(robots, 0.0),
+      free_cells_(KnownLattice::of_free_space(env, static_cast<std::uint32_t>(config.cells))),
+      merged_(env.bounds(), static_cast<std::uint32_t>(config.cells)) {
+  free_count_ = free_cells_.count();
+  // With the outer ring known (boundary), its pockets are not elements: only holes are.
+  const std::vector<bool> known(elements_.size(), false);
+  const std::shared_ptr<const Belief> prior = belief_for(known);
+  const std::size_t maps = shared ? 1 : robots;
+  for (std::size_t m = 0; m < maps; ++m) {
+    RobotMap map{KnownLattice(env.bounds(), static_cast<std::uint32_t>(config.cells)),
+                 SeenWalls(env), known, prior, {}, {}, 0, 0};
+    maps_.push_back(std::move(map));
+  }
+}
+
+Mapping::~Mapping() = default;
+
+const Belief& Mapping::belief(std::uint32_t i) const {
+  return *maps_[map_of(i)].belief;
+}
+
+const KnownLattice& Mapping::lattice(std::uint32_t i) const {
+  return maps_[map_of(i)].lattice;
+}
+
+std::shared_ptr<const Belief> Mapping::belief_for(const std::vector<bool>& known) {
+  auto it = beliefs_.find(known);
+  if (it != beliefs_.end()) return it->second;
+  auto b = std::make_shared<Belief>();
+  b->environment = believed_environment(env_, elements_, known);
+  b->integrator = std::make_unique<CellIntegrator>(*b->environment, density_);
+  b->space = std::make_unique<ConfigurationSpace>(*b->environment, radius_);
+  return beliefs_.emplace(known, std::move(b)).first->second;
+}
+
+const Environment& Mapping::free_space(std::uint32_t i, Vec2 p) const {
+  const ConfigurationSpace& space = *belief(i).space;
+  return space.part(space.part_of(p).value_or(0));
+}
+
+void Mapping::start(std::uint32_t i, Vec2 p, SimTime t) {
+  take(i, p, t);
+}
+
+void Mapping::moved(std::uint32_t i, Vec2 p, double length, SimTime t) {
+  travelled_[i] += length;
+  if (travelled_[i] >= config_.spacing) take(i, p, t);
+}
+
+void Mapping::settled(std::uint32_t i, Vec2 p, SimTime t) {
+  if (travelled_[i] > 0.0) take(i, p, t);
+}
+
+void Mapping::take(std::uint32_t i, Vec2 p, SimTime t) {
+  travelled_[i] = 0.0;
+  // A reading larger than a message is kept as parts that each fit one.
+  const auto limit = static_cast<std::uint32_t>(config_.max_bytes);
+  for (Scan& part : split_scan(env_, take_scan(env_, p, range_), limit)) {
+    const auto s = static_cast<std::uint32_t>(scans_.size());
+    merged_.fill(part.fan);
+    scans_.push_back(std::move(part));
+    add(maps_[map_of(i)], s);
+  }
+  note_merged(t);
+}
+
+void Mapping::add(RobotMap& m, std::uint32_t s) {
+  if (m.holds.size() <= s) m.holds.resize(scans_.size(), false);
+  if (m.holds[s]) return;
+  m.holds[s] = true;
+  m.order.push_back(s);
+  const Scan& scan = scans_[s];
+  m.lattice.fill(scan.fan);
+  if (!m.walls.add(scan)) return;
+  bool changed = false;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    if (!m.known[e] && m.walls.seen(elements_[e])) {
+      m.known[e] = true;
+      changed = true;
+    }
+  }
+  if (!changed) return;
+  m.belief = belief_for(m.known);
+  ++belief_changes_;
+}
+
+void Mapping::note_merged(SimTime t) {
+  const double f = known_fraction();
+  if (!time_90_ && f >= 0.9) time_90_ = t;
+  if (!time_100_ && f >= 1.0) time_100_ = t;
+}
+
+MapPayload Mapping::pack(std::uint32_t sender) {
+  RobotMap& m = maps_[map_of(sender)];
+  auto ids = std::make_shared<std::vector<std::uint32_t>>();
+  std::uint64_t bytes = 0;
+  const auto fits = [&](std::uint32_t s) {
+    return bytes + scans_[s].bytes() <= config_.max_bytes;
+  };
+  // The newest first, in the order it came to hold them.
+  while (m.sent < m.order.size() && fits(m.order[m.sent])) {
+    ids->push_back(m.order[m.sent]);
+    bytes += scans_[m.order[m.sent]].bytes();
+    ++m.sent;
+  }
+  // Room left: older ones again, in turn (a receiver may have lost them).
+  const std::size_t older = m.sent - ids->size();
+  for (std::size_t k = 0; k < older; ++k) {
+    if (m.repeat >= older) m.repeat = 0;
+    const std::uint32_t s = m.order[m.repeat];
+    if (!fits(s)) break;
+    ids->push_back(s);
+    bytes += scans_[s].bytes();
+    ++m.repeat;
+  }
+  bytes_sent_ += bytes;
+  return MapPayload{std::move(ids), static_cast<std::uint32_t>(bytes)};
+}
+
+void Mapping::merge(std::uint32_t receiver, const MapPayload& payload) {
+  if (!payload.scans) return;
+  RobotMap& m = maps_[map_of(receiver)];
+  for (const std::uint32_t s : *payload.scans)
+    add(m, s);
+}
+
+double Mapping::known_fraction() const {
+  return free_count_ == 0 ? 1.0
+                          : static_cast<double>(merged_.common(free_cells_)) /
+                                static_cast<double>(free_count_);
+}
+
+double Mapping::known_fraction(std::uint32_t i) const {
+  return free_count_ == 0 ? 1.0
+                          : static_cast<double>(lattice(i).common(free_cells_)) /
+                                static_cast<double>(free_count_);
+}
+
+double Mapping::disagreement() const {
+  if (maps_.size() <= 1 || free_count_ == 0) return 0.0;
+  const double merged = static_cast<double>(merged_.common(free_cells_));
+  double sum = 0.0;
+  for (const RobotMap& m : maps_)
+    sum += merged - static_cast<double>(m.lattice.common(free_cells_));
+  return sum / static_cast<double>(maps_.size()) / static_cast<double>(free_count_);
+}
+
+std::size_t Mapping::elements_known_min() const {
+  std::size_t least = elements_.size();
+  for (const RobotMap& m : maps_)
+    least = std::min<std::size_t>(
+        least, static_cast<std::size_t>(std::count(m.known.begin(), m.known.end(), true)));
+  return least;
+}
+
+}  // namespace covsim

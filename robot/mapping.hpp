@@ -1,0 +1,121 @@
+#pragma once
+// Robots that do not know Ω (environment.known "boundary" or "none") map it as they cover.
+//
+// Each robot keeps range readings (scans, geometry/scan.hpp): one where it starts, one each
+// time it has travelled mapping.spacing, one where it settles. From the walls they show it
+// learns the obstacles whose every wall it has seen (geometry/map_elements.hpp); its belief Ω̂
+// is the box or Ω's outer ring less those, so unknown space counts as free and Ω̂ ⊇ Ω. Loop 1
+// computes cells and projections in Ω̂; a target in an obstacle not yet known is found
+// unreachable by the planner (projection policy `discover`), which is the paper's Fig. 4. The
+// free area the scans show is marked on a lattice (geometry/known_lattice.hpp) for the
+// measures and figures.
+//
+// Centralized (the ideal network), the robots share one map. Decentralized, each robot has
+// its own; every broadcast carries readings it holds (its newest first, then older ones in
+// turn, so that maps complete under loss) up to mapping.max_bytes, and a robot merges those it
+// hears. Readings are kept run-wide once; a message carries their numbers and is counted at
+// the size a robot would send them (Scan::bytes()).
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/sim_time.hpp"
+#include "geometry/cell_integrator.hpp"
+#include "geometry/configuration_space.hpp"
+#include "geometry/known_lattice.hpp"
+#include "geometry/map_elements.hpp"
+#include "robot/coverage_config.hpp"
+#include "robot/map_exchange.hpp"
+
+namespace covsim {
+
+// Ω as a robot believes it, with what loop 1 computes in it.
+struct Belief {
+  std::unique_ptr<Environment> environment;
+  std::unique_ptr<CellIntegrator> integrator;
+  std::unique_ptr<ConfigurationSpace> space;  // Ω̂ shrunk by the robots' radius
+};
+
+class Mapping final : public MapExchange {
+ public:
+  // shared: one map for every robot (the centralized controller).
+  Mapping(const Environment& env, const Density& density, double radius, double range,
+          const MappingConfig& config, std::size_t robots, bool shared);
+  ~Mapping() override;
+
+  // Robot i at p: its first reading (at the start).
+  void start(std::uint32_t i, Vec2 p, SimTime t);
+  // Robot i moved `length` to p: a reading once it has travelled mapping.spacing.
+  void moved(std::uint32_t i, Vec2 p, double length, SimTime t);
+  // Robot i settled at p: a reading there, unless it has not moved since its last.
+  void settled(std::uint32_t i, Vec2 p, SimTime t);
+
+  const Belief& belief(std::uint32_t i) const;
+  // Where robot i, standing at p (in Ω shrunk by the radius), believes its centre may go.
+  const Environment& free_space(std::uint32_t i, Vec2 p) const;
+  // Times a robot's belief changed (an obstacle became known), over all maps.
+  std::uint64_t belief_changes() const { return belief_changes_; }
+
+  MapPayload pack(std::uint32_t sender) override;
+  void merge(std::uint32_t receiver, const MapPayload& payload) override;
+  std::uint64_t payload_limit() const override { return config_.max_bytes; }
+
+  // Measures, of the cells whose centre lies in Ω (KnownLattice::of_free_space).
+  const std::vector<Scan>& scans() const { return scans_; }
+  const KnownLattice& free_cells() const { return free_cells_; }
+  const KnownLattice& merged() const { return merged_; }
+  const KnownLattice& lattice(std::uint32_t i) const;
+  // The fraction of Ω's free area known: merged over the robots, and robot i's own.
+  double known_fraction() const;
+  double known_fraction(std::uint32_t i) const;
+  // When the merged map first reached 90% and 100% of Ω's free area.
+  std::optional<SimTime> time_to_90() const { return time_90_; }
+  std::optional<SimTime> time_to_100() const { return time_100_; }
+  // The mean over the robots of the fraction of Ω's free area some robot knows and it does
+  // not (0 with one shared map).
+  double disagreement() const;
+  // Map bytes broadcast (each broadcast counted once, whatever its receivers).
+  std::uint64_t bytes_sent() const { return bytes_sent_; }
+  // Obstacles (holes, and pockets of the outer ring with "none") and how many of them the
+  // least-informed robot knows.
+  std::size_t elements() const { return elements_.size(); }
+  std::size_t elements_known_min() const;
+  bool shared() const { return maps_.size() == 1 && robots_ > 1; }
+
+ private:
+  struct RobotMap {
+    KnownLattice lattice;
+    SeenWalls walls;
+    std::vector<bool> known;  // per element
+    std::shared_ptr<const Belief> belief;
+    std::vector<std::uint32_t> order;  // the readings it holds, as it came to hold them
+    std::vector<bool> holds;           // per reading
+    std::size_t sent = 0;              // order[0, sent) have been broadcast at least once
+    std::size_t repeat = 0;            // the next of those to broadcast again
+  };
+  std::size_t map_of(std::uint32_t i) const { return maps_.size() == 1 ? 0 : i; }
+  void take(std::uint32_t i, Vec2 p, SimTime t);
+  // Adds scan s to map m, updating its belief if an obstacle became known.
+  void add(RobotMap& m, std::uint32_t s);
+  std::shared_ptr<const Belief> belief_for(const std::vector<bool>& known);
+  void note_merged(SimTime t);
+
+  const Environment& env_;
+  const Density& density_;
+  double radius_, range_;
+  MappingConfig config_;
+  std::size_t robots_;
+  std::vector<MapElement> elements_;
+  std::vector<Scan> scans_;
+  std::vector<RobotMap> maps_;
+  std::vector<double> travelled_;  // per robot, since its last reading
+  std::map<std::vector<bool>, std::shared_ptr<const Belief>> beliefs_;
+  KnownLattice free_cells_, merged_;
+  std::uint64_t free_count_ = 0;
+  std::optional<SimTime> time_90_, time_100_;
+  std::uint64_t bytes_sent_ = 0, belief_changes_ = 0;
+};
+
+}  // namespace covsim

@@ -1,0 +1,193 @@
+// Whole runs of robots that do not know Ω (environment.known): they map it as they cover,
+// their maps never mark free space inside an obstacle, a map from every reading holds what is
+// visible from where the readings were taken, maps are shared over the network, and the runs
+// converge near the cost of the run with Ω known.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "robot/coverage_controller.hpp"
+#include "robot/mapping.hpp"
+#include "scenarios/scenario_error.hpp"
+#include "sim/simulation.hpp"
+#include "tests/robot/paper_scenarios.hpp"
+
+using namespace covsim;
+using Catch::Matchers::Contains;
+using covsim::test::paper;
+
+namespace {
+
+Scenario unknown(const std::string& name, const char* known, nlohmann::json range,
+                 const nlohmann::json& extra = nlohmann::json::object()) {
+  nlohmann::json j = paper(name).json;
+  j["environment"]["known"] = known;
+  j["sensor"]["range"] = std::move(range);
+  for (const auto& [key, value] : extra.items())
+    j[key] = value;
+  return covsim::test::parse_beside_paper(j, name);
+}
+
+// Every cell a map marks has its centre in Ω.
+void check_inside(const Mapping& m, std::size_t robots) {
+  const std::uint64_t merged = m.merged().count();
+  CHECK(merged > 0);
+  CHECK(m.merged().common(m.free_cells()) == merged);
+  for (std::uint32_t i = 0; i < robots; ++i) {
+    const KnownLattice& l = m.lattice(i);
+    CHECK(l.common(m.free_cells()) == l.count());
+    CHECK(l.common(m.merged()) == l.count());  // a robot knows nothing the readings do not show
+  }
+}
+
+}  // namespace
+
+TEST_CASE("robots that know only Ω's boundary, or nothing, converge to the known run's cost",
+          "[mapping][coverage]") {
+  for (const char* name : {"u_shape.json", "l_shape.json", "two_obstacles.json", "fig2b.json",
+                           "fig2c.json", "fig2d.json"}) {
+    for (const char* known : {"boundary", "none"}) {
+      for (const nlohmann::json& range : {nlohmann::json(0.5), nlohmann::json(nullptr)}) {
+        INFO(name << ", known " << known << ", range " << range.dump());
+        Simulation sim(unknown(name, known, range));
+        const CoverageOutcome out = sim.run();
+        CHECK(out.converged);
+        CHECK(out.known == known);
+        REQUIRE(std::isfinite(out.cost_known));
+        CHECK(out.cost_ratio() == Approx(1.0).epsilon(0.02));
+        CHECK(out.known_fraction > 0.5);  // fig2b: the robots never look behind its wall
+        check_inside(*sim.controller().mapping(), out.robots.size());
+      }
+    }
+  }
+}
+
+TEST_CASE("with contact sensing nothing is mapped and the planner finds the obstacles (Fig. 4)",
+          "[mapping][coverage]") {
+  Simulation sim(unknown("u_shape.json", "none", 0.0));
+  const CoverageOutcome out = sim.run();
+  CHECK(out.converged);
+  CHECK(out.known_fraction == 0.0);
+  CHECK(out.obstacles_known_min == 0);
+  // Targets the map placed in free space, inside the obstacle: found unreachable, settled at
+  // the closest point the planner reached, and the run still converges.
+  CHECK(out.discoveries > 0);
+  CHECK_FALSE(out.planner_failure);
+  CHECK(out.cost_ratio() < 1.2);
+  // What the robots believe is the bounding box: its cells are larger than Ω's.
+  const Mapping& m = *sim.controller().mapping();
+  CHECK(m.belief(0).environment->area() == Approx(1.0));
+  CHECK(sim.scenario().environment->area() < 0.9);
+}
+
+TEST_CASE("with an unlimited range a map holds what is visible from where readings were taken",
+          "[mapping]") {
+  Simulation sim(unknown("two_obstacles.json", "none", nullptr));
+  const CoverageOutcome out = sim.run();
+  REQUIRE(out.converged);
+  const Mapping& m = *sim.controller().mapping();
+  const Environment& env = *sim.scenario().environment;
+  const KnownLattice& map = m.merged();
+  std::size_t visible = 0;
+  for (std::int32_t j = 0; j < map.ny(); ++j) {
+    for (std::int32_t i = 0; i < map.nx(); ++i) {
+      const Vec2 c = map.centre(i, j);
+      bool seen = false, clearly = false;
+      for (const Scan& s : m.scans()) {
+        if (!env.locate(c)) break;
+        seen = seen || env.segment_inside(s.origin, c);
+        clearly = clearly || (env.clear_of_boundary(s.origin, c, 1e-6) &&
+                              env.boundary_distance(c) > 1e-6);
+        if (clearly) break;
+      }
+      if (map.at(i, j)) CHECK(seen);
+      if (clearly) {
+        ++visible;
+        CHECK(map.at(i, j));
+      }
+    }
+  }
+  CHECK(visible > 0.9 * static_cast<double>(m.free_cells().count()));
+}
+
+TEST_CASE("decentralized, robots share their maps in their broadcasts, also under loss",
+          "[mapping][network]") {
+  for (const double loss : {0.0, 0.6}) {
+    INFO("loss " << loss);
+    const nlohmann::json network{{"loss", {{"model", "bernoulli"}, {"p", loss}}}};
+    Simulation sim(unknown("two_obstacles.json", "none", 0.5, {{"network", network}}));
+    const CoverageOutcome out = sim.run();
+    CHECK(out.converged);
+    CHECK(out.decentralized);
+    const Mapping& m = *sim.controller().mapping();
+    check_inside(m, out.robots.size());
+    CHECK(out.map_bytes > 0);
+    // No broadcast carries more than its limit.
+    const double broadcasts = out.sim_time.seconds() / 0.1 + 1.0;
+    CHECK(static_cast<double>(out.map_bytes) <=
+          broadcasts * static_cast<double>(out.robots.size()) * 1024.0);
+    // Every robot learnt the obstacles and most of the area from the others.
+    CHECK(out.obstacles_known_min == 2);
+    CHECK(out.known_fraction_min > 0.9 * out.known_fraction);
+    CHECK(out.cost_ratio() == Approx(1.0).epsilon(0.02));
+  }
+  // Small messages: readings are cut into parts that fit.
+  const nlohmann::json network{{"loss", {{"model", "bernoulli"}, {"p", 0.3}}}};
+  Simulation small(unknown("two_obstacles.json", "none", nullptr,
+                           {{"network", network}, {"mapping", {{"max_bytes", 100}}}}));
+  const CoverageOutcome out = small.run();
+  CHECK(out.converged);
+  for (const Scan& s : small.controller().mapping()->scans())
+    CHECK(s.bytes() <= 100);
+}
+
+TEST_CASE("a decentralized mapping run under loss is reproducible", "[mapping][determinism]") {
+  const nlohmann::json network{{"loss", {{"model", "bernoulli"}, {"p", 0.3}}}};
+  const Scenario s = unknown("u_shape.json", "none", 0.3, {{"network", network}});
+  const CoverageOutcome a = Simulation(s).run(), b = Simulation(s).run();
+  CHECK(a.fingerprint == b.fingerprint);
+  CHECK(a.map_bytes == b.map_bytes);
+  CHECK(a.known_fraction_min == b.known_fraction_min);
+  // Ω known: the comparison run is the known run itself.
+  nlohmann::json j = paper("u_shape.json").json;
+  j["sensor"]["range"] = 0.3;
+  j["network"] = network;
+  CHECK(Simulation(covsim::test::parse_beside_paper(j, "u_shape.json")).run().cost_real ==
+        a.cost_known);
+}
+
+TEST_CASE("what robots that do not know Ω cannot be told is refused", "[mapping][scenario]") {
+  const auto error = [](const char* section, const nlohmann::json& value) {
+    nlohmann::json j = paper("u_shape.json").json;
+    j["environment"]["known"] = "none";
+    if (std::string(section) == "robots.localization")
+      j["robots"]["localization"] = value;
+    else
+      j[section] = value;
+    try {
+      covsim::test::parse_beside_paper(j, "u_shape.json");
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(error("planner", {{"type", "visibility_graph"}}),
+             Contains("$.environment.known") && Contains("tangent_bug"));
+  CHECK_THAT(error("controller", {{"projection", "known"}}), Contains("discover"));
+  CHECK_THAT(error("controller", {{"type", "geodesic_lloyd"}}), Contains("geodesic"));
+  CHECK_THAT(error("robots.localization", {{"type", "tracking"}}), Contains("exact localization"));
+  CHECK_THAT(error("sensor", {{"noise", {{"sigma", 0.01}}}}), Contains("noisy"));
+  CHECK_THAT(error("mapping", {{"max_bytes", 10}}), Contains("$.mapping.max_bytes"));
+  CHECK(error("mapping", {{"spacing", 0.2}}) == "no error");
+  // Mapping settings without mapping would be ignored; their defaults may be stated.
+  nlohmann::json full = paper("u_shape.json").json;
+  full["mapping"] = {{"spacing", 0.2}};
+  CHECK_THROWS_WITH(covsim::test::parse_beside_paper(full, "u_shape.json"),
+                    Contains("$.mapping") && Contains("environment.known"));
+  full["mapping"] = {{"spacing", 0.1}};
+  CHECK_NOTHROW(covsim::test::parse_beside_paper(full, "u_shape.json"));
+  nlohmann::json bad = paper("u_shape.json").json;
+  bad["environment"]["known"] = "partly";
+  CHECK_THROWS_WITH(covsim::test::parse_beside_paper(bad, "u_shape.json"),
+                    Contains("$.environment.known") && Contains("boundary"));
+}
