@@ -53,12 +53,10 @@ std::uint64_t KnownLattice::fill(const std::vector<Vec2>& polygon) {
     std::sort(xs.begin(), xs.end());
     for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
       // Cells whose centre x lies in [xs[k], xs[k + 1]].
-      const auto i0 =
-          std::max<std::int32_t>(0, static_cast<std::int32_t>(
-                                        std::ceil((xs[k] - origin_.x) / cell_ - 0.5)));
+      const auto i0 = std::max<std::int32_t>(
+          0, static_cast<std::int32_t>(std::ceil((xs[k] - origin_.x) / cell_ - 0.5)));
       const auto i1 = std::min<std::int32_t>(
-          nx_ - 1,
-          static_cast<std::int32_t>(std::floor((xs[k + 1] - origin_.x) / cell_ - 0.5)));
+          nx_ - 1, static_cast<std::int32_t>(std::floor((xs[k + 1] - origin_.x) / cell_ - 0.5)));
       for (std::int32_t i = i0; i <= i1; ++i) {
         if (!at(i, j)) {
           set(i, j);

@@ -138,8 +138,7 @@ bool SeenWalls::add(const Scan& scan) {
 }
 
 bool SeenWalls::seen(const MapElement& e) const {
-  return std::all_of(e.edges.begin(), e.edges.end(),
-                     [&](std::uint32_t k) { return whole_[k]; });
+  return std::all_of(e.edges.begin(), e.edges.end(), [&](std::uint32_t k) { return whole_[k]; });
 }
 
 }  // namespace covsim

@@ -136,8 +136,8 @@ ConfigKeys<CoverageConfig> mapping_keys() {
               &CoverageConfig::mapping, &MappingConfig::max_bytes),
           member_key<CoverageConfig>(
               ParamSpec::number("cells", "cells",
-                                 "cells of the known-area lattice across Ω's bounding box (the "
-                                 "measured area is exact to a band one cell wide)")
+                                "cells of the known-area lattice across Ω's bounding box (the "
+                                "measured area is exact to a band one cell wide)")
                   .at_least(8)
                   .at_most(4096)
                   .defaults_to(d.mapping.cells),

@@ -79,10 +79,10 @@ std::optional<KnownEnvironment> known_environment_named(std::string_view name);
 // How robots that do not know Ω map it (robot/mapping.hpp).
 struct MappingConfig {
   KnownEnvironment known = KnownEnvironment::full;
-  double spacing = 0.1;              // m travelled between range readings kept for the map
-  double max_bytes = 1024;           // map bytes a broadcast carries at most
-  double cells = 200;                // known-area lattice cells across Ω's box
-  bool compare_known = true;         // also run with Ω known, for the cost ratio
+  double spacing = 0.1;       // m travelled between range readings kept for the map
+  double max_bytes = 1024;    // map bytes a broadcast carries at most
+  double cells = 200;         // known-area lattice cells across Ω's box
+  bool compare_known = true;  // also run with Ω known, for the cost ratio
   bool unknown() const { return known != KnownEnvironment::full; }
   friend bool operator==(const MappingConfig&, const MappingConfig&) = default;
 };

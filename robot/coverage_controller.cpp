@@ -78,8 +78,7 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   if (ideal) {
     view_ = std::make_unique<IdealView>(*state_);
   } else {
-    view_ = std::make_unique<NetworkedView>(kernel_, env, config_.network, *state_,
-                                            mapping_.get());
+    view_ = std::make_unique<NetworkedView>(kernel_, env, config_.network, *state_, mapping_.get());
   }
   sensor_ = std::make_unique<SensorModel>(
       kernel_, [this](std::uint32_t i) -> const Environment& { return free_space(i); },

@@ -4,7 +4,6 @@
 
 namespace covsim {
 
-
 Mapping::Mapping(const Environment& env, const Density& density, double radius, double range,
                  const MappingConfig& config, std::size_t robots, bool shared)
     : env_(env),
@@ -24,7 +23,13 @@ Mapping::Mapping(const Environment& env, const Density& density, double radius, 
   const std::size_t maps = shared ? 1 : robots;
   for (std::size_t m = 0; m < maps; ++m) {
     RobotMap map{KnownLattice(env.bounds(), static_cast<std::uint32_t>(config.cells)),
-                 SeenWalls(env), known, prior, {}, {}, 0, 0};
+                 SeenWalls(env),
+                 known,
+                 prior,
+                 {},
+                 {},
+                 0,
+                 0};
     maps_.push_back(std::move(map));
   }
 }
@@ -110,9 +115,7 @@ MapPayload Mapping::pack(std::uint32_t sender) {
   RobotMap& m = maps_[map_of(sender)];
   auto ids = std::make_shared<std::vector<std::uint32_t>>();
   std::uint64_t bytes = 0;
-  const auto fits = [&](std::uint32_t s) {
-    return bytes + scans_[s].bytes() <= config_.max_bytes;
-  };
+  const auto fits = [&](std::uint32_t s) { return bytes + scans_[s].bytes() <= config_.max_bytes; };
   // The newest first, in the order it came to hold them.
   while (m.sent < m.order.size() && fits(m.order[m.sent])) {
     ids->push_back(m.order[m.sent]);
@@ -141,9 +144,9 @@ void Mapping::merge(std::uint32_t receiver, const MapPayload& payload) {
 }
 
 double Mapping::known_fraction() const {
-  return free_count_ == 0 ? 1.0
-                          : static_cast<double>(merged_.common(free_cells_)) /
-                                static_cast<double>(free_count_);
+  return free_count_ == 0
+             ? 1.0
+             : static_cast<double>(merged_.common(free_cells_)) / static_cast<double>(free_count_);
 }
 
 double Mapping::known_fraction(std::uint32_t i) const {

@@ -196,8 +196,9 @@ Knowledge NetworkedView::knowledge(std::uint32_t i, Generators kind) const {
 
 void NetworkedView::broadcast(Kernel& k, std::uint32_t i) {
   const std::vector<Vec2>& positions = state_.points(Generators::positions);
-  StateMessage m{i, next_seq_[i]++, k.now(), state_.points(Generators::virtual_generators)[i],
-                 positions[i], {}};
+  StateMessage m{
+      i, next_seq_[i]++, k.now(), state_.points(Generators::virtual_generators)[i], positions[i],
+      {}};
   if (maps_ != nullptr) m.map = maps_->pack(i);
   const auto n = static_cast<std::uint32_t>(tables_.size());
   totals_.sent += n - 1;

@@ -365,36 +365,43 @@ void check_mapping(const JsonValue& root, const CoverageConfig& c) {
   if (!c.mapping.unknown()) {
     // Its defaults may be stated (a described scenario states them); others would be ignored.
     if (auto m = root.find("mapping"); m && !(c.mapping == MappingConfig{}))
-      m->fail("applies only to robots that do not know Ω: set environment.known to "
-              "\"boundary\" or \"none\"");
+      m->fail(
+          "applies only to robots that do not know Ω: set environment.known to "
+          "\"boundary\" or \"none\"");
     return;
   }
   const JsonValue known = root.at("environment").at("known");
   const PlannerEntry* planner = planner_registry().find(c.planner.type);
   if (planner != nullptr && !planner->senses_only)
-    known.fail(fmt::format("robots that do not know Ω need a planner that plans from what it "
-                           "senses (tangent_bug); {} plans on a map of Ω",
-                           c.planner.type));
+    known.fail(
+        fmt::format("robots that do not know Ω need a planner that plans from what it "
+                    "senses (tangent_bug); {} plans on a map of Ω",
+                    c.planner.type));
   if (c.projection == ProjectionPolicy::known)
-    known.fail("controller.projection \"known\" projects targets onto Ω, which the robots do "
-               "not know: use \"discover\" (the default)");
+    known.fail(
+        "controller.projection \"known\" projects targets onto Ω, which the robots do "
+        "not know: use \"discover\" (the default)");
   if (const LawEntry* law = coverage_law_registry().find(c.law.type); law && law->needs_map)
-    known.fail(fmt::format("the {} law needs Ω's geodesic distances, which robots that do not "
-                           "know Ω cannot compute",
-                           c.law.type));
+    known.fail(
+        fmt::format("the {} law needs Ω's geodesic distances, which robots that do not "
+                    "know Ω cannot compute",
+                    c.law.type));
   if (c.localization.type != LocalizationConfig{}.type)
-    known.fail(fmt::format("a map built from readings placed by {} localization (mapping with "
-                           "an uncertain position, SLAM) is not modelled: use exact localization",
-                           c.localization.type));
-  if (c.network.channel.model &&
-      kStateMessageBytes + c.mapping.max_bytes > kMaxRadioMessageBytes)
-    root.at("mapping").at("max_bytes").fail(fmt::format(
-        "a simulated radio carries messages of at most {} bytes, {} of them the state: at most "
-        "{} map bytes",
-        kMaxRadioMessageBytes, kStateMessageBytes, kMaxRadioMessageBytes - kStateMessageBytes));
+    known.fail(
+        fmt::format("a map built from readings placed by {} localization (mapping with "
+                    "an uncertain position, SLAM) is not modelled: use exact localization",
+                    c.localization.type));
+  if (c.network.channel.model && kStateMessageBytes + c.mapping.max_bytes > kMaxRadioMessageBytes)
+    root.at("mapping")
+        .at("max_bytes")
+        .fail(fmt::format(
+            "a simulated radio carries messages of at most {} bytes, {} of them the state: at most "
+            "{} map bytes",
+            kMaxRadioMessageBytes, kStateMessageBytes, kMaxRadioMessageBytes - kStateMessageBytes));
   if (c.sensor.noise_sigma > 0.0)
-    known.fail("a map built from noisy ranges (which walls a reading saw is then uncertain) is "
-               "not modelled: remove sensor.noise");
+    known.fail(
+        "a map built from noisy ranges (which walls a reading saw is then uncertain) is "
+        "not modelled: remove sensor.noise");
 }
 
 // The keys a scenario file may have at its top: the environment, the seed, and the sections.

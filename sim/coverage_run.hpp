@@ -78,8 +78,8 @@ struct CoverageOutcome {
   // robot's), when the merged map reached 90% and 100% of it (NaN: never), the disagreement
   // between robots' maps, map bytes broadcast, readings kept, obstacles (holes and pockets)
   // and how many the least-informed robot knew, goals found unreachable while the robot's map
-  // placed them in free space (CoverageController::discoveries), and the final real cost with Ω known (NaN:
-  // not compared).
+  // placed them in free space (CoverageController::discoveries), and the final real cost with Ω
+  // known (NaN: not compared).
   std::string known = "full";
   double known_fraction = 1.0, known_fraction_min = 1.0;
   double mapping_time_90 = 0.0, mapping_time_100 = 0.0;

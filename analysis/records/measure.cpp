@@ -429,7 +429,8 @@ const std::vector<Measure>& measures() {
           .later(),
       outcome(
           "mapping.cost_known", K::number, kCostUnit,
-          "final real cost H of the same run with Ω known (mapping.compare_known; null: not run)",
+          "H of the real positions at the end of the same run with Ω known (mapping.compare_known; "
+          "null: not run)",
           [](const O& o) { return number_or_null(o.cost_known); },
           [](O& o, const nlohmann::json& j) { o.cost_known = j.is_null() ? NAN : j.get<double>(); })
           .later(),

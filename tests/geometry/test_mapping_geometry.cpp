@@ -117,7 +117,8 @@ TEST_CASE("obstacles are the holes and, without the outer ring, its pockets",
   for (int mask = 0; mask < 8; ++mask) {
     const std::vector<bool> known{(mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0};
     const auto belief = believed_environment(env, all, known);
-    const double expected = box - (known[0] ? h0 : 0) - (known[1] ? h1 : 0) - (known[2] ? notch : 0);
+    const double expected =
+        box - (known[0] ? h0 : 0) - (known[1] ? h1 : 0) - (known[2] ? notch : 0);
     INFO("mask " << mask);
     CHECK(belief->area() == Approx(expected).epsilon(1e-12));
     for (const auto& ring : env.rings())

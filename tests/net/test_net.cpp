@@ -129,8 +129,8 @@ TEST_CASE("range and line of sight", "[net]") {
 TEST_CASE("neighbour tables keep the newest and drop the stale", "[net]") {
   NeighborTable t;
   auto msg = [](std::uint32_t from, std::uint64_t seq, double sent) {
-    return StateMessage{
-        from, seq, SimTime::from_seconds(sent), {static_cast<double>(seq), 0}, {0, 0}, {}};
+    return StateMessage{from,   seq, SimTime::from_seconds(sent), {static_cast<double>(seq), 0},
+                        {0, 0}, {}};
   };
   CHECK(t.update(msg(1, 5, 1.0)));
   CHECK_FALSE(t.update(msg(1, 3, 0.5)));  // older, arriving late

@@ -96,8 +96,8 @@ TEST_CASE("with an unlimited range a map holds what is visible from where readin
       for (const Scan& s : m.scans()) {
         if (!env.locate(c)) break;
         seen = seen || env.segment_inside(s.origin, c);
-        clearly = clearly || (env.clear_of_boundary(s.origin, c, 1e-6) &&
-                              env.boundary_distance(c) > 1e-6);
+        clearly = clearly ||
+                  (env.clear_of_boundary(s.origin, c, 1e-6) && env.boundary_distance(c) > 1e-6);
         if (clearly) break;
       }
       if (map.at(i, j)) CHECK(seen);

@@ -85,6 +85,18 @@ RunMeasures known_run() {
   o.localization_error_mean = 0.003;
   o.localization_error_max = 0.0125;
   o.fixes = 640;
+  o.known = "none";
+  o.known_fraction = 0.875;
+  o.known_fraction_min = 0.75;
+  o.mapping_time_90 = 10.5;
+  o.mapping_time_100 = NAN;
+  o.map_disagreement = 0.0625;
+  o.map_bytes = 4096;
+  o.scans = 55;
+  o.obstacles = 3;
+  o.obstacles_known_min = 2;
+  o.discoveries = 5;
+  o.cost_known = 0.096;
   o.planner_steps = 200;
   o.planner_seconds = 0.0005;  // 2.5 µs a step
   o.stop_reason = "planner_failure";
@@ -120,6 +132,11 @@ const ojson kKnownFinal = ojson::parse(R"({
              "deadlocks": 4, "deadlock_time": 2.25, "deadlocks_resolved": 3,
              "turn_time": 6.5, "hard_stops": 2},
   "localization": {"error_mean": 0.003, "error_max": 0.0125, "fixes": 640},
+  "mapping": {"known": "none", "known_fraction": 0.875, "known_fraction_min": 0.75,
+              "time_to_90_percent": 10.5, "time_to_100_percent": null,
+              "disagreement": 0.0625, "bytes": 4096, "scans": 55, "obstacles": 3,
+              "obstacles_known_min": 2, "discoveries": 5, "cost_known": 0.096,
+              "cost_ratio": 1.25},
   "planner": {"steps": 200, "step_time_us": 2.5},
   "stop_reason": "planner_failure",
   "planner_failure": {"robot": 3, "time": 7.0, "goal": [1.0, 2.0], "position": [3.0, 4.0]},
@@ -141,7 +158,8 @@ const ojson kKnownRun = ojson::parse(R"({
   "delivery_ratio": 1.0476190476190477, "latency_mean": 0.5, "latency_p95": 0.75,
   "channel_occupancy": 0.25, "phy_drops": 32, "gap_min": -0.005, "contact_time": 1.5,
   "wall_contacts": 3, "deadlocks": 4, "deadlock_time": 2.25, "turn_time": 6.5,
-  "localization_error": 0.003
+  "localization_error": 0.003, "known": "none", "known_fraction": 0.875,
+  "mapping_time_90": 10.5, "map_disagreement": 0.0625, "map_bytes": 4096, "cost_ratio": 1.25
 })");
 
 // docs/outputs.md's table of measures, as measures() gives it.
