@@ -108,6 +108,7 @@ void add_run_command(CLI::App& app) {
     final_file.stream() << final_json(outcome);
     SceneOptions scene_options;
     scene_options.layers = opts->figures.drawn();
+    scene_options.known = &recorder.known_cells();
     scene.stream() << scene_figure(scenario, outcome, recorder.tracks(), scene_options, figure);
     cost.stream() << cost_figure(recorder.samples(), outcome, false, figure);
     recorder.commit();

@@ -27,7 +27,8 @@ KnownLattice KnownLattice::of_free_space(const Environment& env, std::uint32_t c
   return l;
 }
 
-std::uint64_t KnownLattice::fill(const std::vector<Vec2>& polygon) {
+std::uint64_t KnownLattice::fill(const std::vector<Vec2>& polygon,
+                                 std::vector<std::size_t>* fresh) {
   if (polygon.size() < 3) return 0;
   double lo = INFINITY, hi = -INFINITY;
   for (const Vec2& p : polygon) {
@@ -61,6 +62,7 @@ std::uint64_t KnownLattice::fill(const std::vector<Vec2>& polygon) {
         if (!at(i, j)) {
           set(i, j);
           ++added;
+          if (fresh != nullptr) fresh->push_back(index(i, j));
         }
       }
     }

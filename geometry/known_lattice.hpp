@@ -35,8 +35,8 @@ class KnownLattice {
     bits_[k / 64] |= std::uint64_t{1} << (k % 64);
   }
   // Marks every cell whose centre lies in the polygon (even-odd rule); returns how many were
-  // new.
-  std::uint64_t fill(const std::vector<Vec2>& polygon);
+  // new, and appends their indices (j · nx + i) to `fresh` if given.
+  std::uint64_t fill(const std::vector<Vec2>& polygon, std::vector<std::size_t>* fresh = nullptr);
   // Marks what the other lattice (of the same box and cells) marks; returns how many were new.
   std::uint64_t merge(const KnownLattice& other);
   std::uint64_t count() const;

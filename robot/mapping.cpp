@@ -1,6 +1,7 @@
 #include "robot/mapping.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace covsim {
 
@@ -17,6 +18,8 @@ Mapping::Mapping(const Environment& env, const Density& density, double radius, 
       free_cells_(KnownLattice::of_free_space(env, static_cast<std::uint32_t>(config.cells))),
       merged_(env.bounds(), static_cast<std::uint32_t>(config.cells)) {
   free_count_ = free_cells_.count();
+  merged_time_.assign(
+      static_cast<std::size_t>(merged_.nx()) * static_cast<std::size_t>(merged_.ny()), NAN);
   // With the outer ring known (boundary), its pockets are not elements: only holes are.
   const std::vector<bool> known(elements_.size(), false);
   const std::shared_ptr<const Belief> prior = belief_for(known);
@@ -78,7 +81,10 @@ void Mapping::take(std::uint32_t i, Vec2 p, SimTime t) {
   const auto limit = static_cast<std::uint32_t>(config_.max_bytes);
   for (Scan& part : split_scan(env_, take_scan(env_, p, range_), limit)) {
     const auto s = static_cast<std::uint32_t>(scans_.size());
-    merged_.fill(part.fan);
+    fresh_.clear();
+    merged_.fill(part.fan, &fresh_);
+    for (const std::size_t k : fresh_)
+      merged_time_[k] = t.seconds();
     scans_.push_back(std::move(part));
     add(maps_[map_of(i)], s);
   }

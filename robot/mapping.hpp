@@ -67,6 +67,11 @@ class Mapping final : public MapExchange {
   const KnownLattice& free_cells() const { return free_cells_; }
   const KnownLattice& merged() const { return merged_; }
   const KnownLattice& lattice(std::uint32_t i) const;
+  // When cell (i, j) of the merged map became known (NaN: never).
+  double known_since(std::int32_t i, std::int32_t j) const {
+    return merged_time_[static_cast<std::size_t>(j) * static_cast<std::size_t>(merged_.nx()) +
+                        static_cast<std::size_t>(i)];
+  }
   // The fraction of Ω's free area known: merged over the robots, and robot i's own.
   double known_fraction() const;
   double known_fraction(std::uint32_t i) const;
@@ -113,6 +118,8 @@ class Mapping final : public MapExchange {
   std::vector<double> travelled_;  // per robot, since its last reading
   std::map<std::vector<bool>, std::shared_ptr<const Belief>> beliefs_;
   KnownLattice free_cells_, merged_;
+  std::vector<double> merged_time_;  // per cell, s
+  std::vector<std::size_t> fresh_;
   std::uint64_t free_count_ = 0;
   std::optional<SimTime> time_90_, time_100_;
   std::uint64_t bytes_sent_ = 0, belief_changes_ = 0;

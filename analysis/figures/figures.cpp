@@ -108,6 +108,14 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
   c.rectangle({0, 0}, {w, h}, Colour::hex(0xffffff));
   view.draw_background(c, layers, f);
 
+  // What the robots' maps did not yet hold at that time, shaded over Ω.
+  if (options.known != nullptr && layers.has(Layer::obstacles)) {
+    const double half = 0.5 * options.known->size;
+    for (const KnownCell& k : options.known->cells)
+      if (k.since > t1 || (!options.time_window && std::isinf(k.since)))
+        c.rectangle(view.to_px(Vec2{k.centre.x - half, k.centre.y + half}),
+                    view.to_px(Vec2{k.centre.x + half, k.centre.y - half}), marks.unknown());
+  }
   // The two partitions at that time, clipped to Ω.
   const CellIntegrator integrator(env, *scenario.density);
   std::vector<Vec2> virt, real;

@@ -9,6 +9,7 @@
 #include "analysis/figures/canvas.hpp"
 #include "analysis/figures/layers.hpp"
 #include "analysis/records/robot_track.hpp"
+#include "analysis/records/run_recorder.hpp"
 #include "sim/coverage_run.hpp"
 #include "sim/metrics_sample.hpp"
 
@@ -19,6 +20,9 @@ struct SceneOptions {
   std::optional<std::pair<double, double>> time_window;  // [t0, t1] s; unset: the whole run
   std::vector<std::uint32_t> robots;                     // the robots drawn; empty: all
   Layers layers = Layers::all();                         // what is drawn
+  // Robots that mapped Ω: the map's cells; those not yet known at the figure's time are
+  // shaded (with the obstacles layer). Null or empty: Ω was known.
+  const KnownCells* known = nullptr;
 };
 
 // Ω with its obstacles (grey), the density as a colour map with its bar, each robot's path

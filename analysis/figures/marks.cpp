@@ -10,6 +10,9 @@ Colour Marks::ink() {
 Colour Marks::obstacle() {
   return Colour::hex(0x4a4a4a);
 }
+Colour Marks::unknown() {
+  return Colour::hex(0x6b7a99, 0.45);
+}
 Colour Marks::virtual_cell() {
   return Colour::hex(0x1f5fbf);
 }

@@ -12,6 +12,7 @@ struct Marks {
 
   static Colour ink();           // text, ticks, the virtual targets
   static Colour obstacle();      // obstacles and the outside of Ω
+  static Colour unknown();       // what the robots' maps do not hold yet
   static Colour virtual_cell();  // the virtual generators' partition
   static Colour real_cell();     // the real positions' partition
   static Colour projected();     // a real target projected onto Ω

@@ -157,9 +157,9 @@ std::vector<RobotTrack> RunFiles::tracks() const {
 bool is_record_file(const std::string& name) {
   if (name.ends_with(".partial")) return true;
   // Both trajectory names: a compressed run replaces an uncompressed one's file, and back.
-  for (std::string_view f :
-       {std::string_view("scenario.json"), std::string_view("final.json"),
-        trajectory_file_name(false), trajectory_file_name(true), std::string_view("metrics.csv")})
+  for (std::string_view f : {std::string_view("scenario.json"), std::string_view("final.json"),
+                             trajectory_file_name(false), trajectory_file_name(true),
+                             std::string_view("metrics.csv"), std::string_view("map.csv")})
     if (name == f) return true;
   return false;
 }

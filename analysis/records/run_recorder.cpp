@@ -6,8 +6,11 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <ostream>
 #include <stdexcept>
+
+#include "robot/mapping.hpp"
 
 #include "analysis/records/result_fields.hpp"
 
@@ -123,7 +126,8 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const std::vector<Vec
       metrics_(dir / "metrics.csv"),
       period_(recording.trajectory_period),
       tracks_(starts.size()),
-      pending_(starts.size()) {
+      pending_(starts.size()),
+      dir_(dir) {
   if (recording.compress) gzip_ = std::make_unique<GzipWriter>(trajectory_.stream());
   for (RobotTrack& k : tracks_)
     k.tolerance = track_tolerance;
@@ -166,6 +170,23 @@ void RunRecorder::on_finish(SimTime t, const CoverageController& c) {
     if (q.set) write(t.seconds(), i, q.p, q.v, q.vt, q.rt);
     pending_[i].set = false;
   }
+  if (const Mapping* m = c.mapping()) {
+    const KnownLattice& free = m->free_cells();
+    known_.size = free.cell();
+    map_ = std::make_unique<AtomicFile>(dir_ / "map.csv");
+    std::string text = "x,y,t\n";
+    for (std::int32_t j = 0; j < free.ny(); ++j) {
+      for (std::int32_t i = 0; i < free.nx(); ++i) {
+        if (!free.at(i, j)) continue;
+        const Vec2 p = free.centre(i, j);
+        const double since = m->known_since(i, j);
+        known_.cells.push_back({p, std::isnan(since) ? INFINITY : since});
+        text += std::isnan(since) ? fmt::format("{},{},\n", p.x, p.y)
+                                  : fmt::format("{},{},{}\n", p.x, p.y, since);
+      }
+    }
+    map_->stream() << text;
+  }
   const std::size_t before = sampler_.samples().size();
   sampler_.on_finish(t, c);
   if (sampler_.samples().size() > before) {
@@ -193,6 +214,7 @@ void RunRecorder::commit() {
   flush(true);
   if (gzip_) gzip_->finish();
   trajectory_.commit();
+  if (map_) map_->commit();
   metrics_.commit();
 }
 

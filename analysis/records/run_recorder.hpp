@@ -75,6 +75,17 @@ class GzipWriter {
   bool finished_ = false;
 };
 
+// A cell of the known-area lattice whose centre lies in Ω, and when the robots' maps together
+// first held it (robot/mapping.hpp; infinite: never).
+struct KnownCell {
+  Vec2 centre;
+  double since;
+};
+struct KnownCells {
+  double size = 0.0;  // m, a cell's side
+  std::vector<KnownCell> cells;
+};
+
 class RunRecorder final : public CoverageObserver {
  public:
   // recording: the scenario's (the trajectory period: seconds between a robot's rows, 0 for
@@ -85,10 +96,14 @@ class RunRecorder final : public CoverageObserver {
               const RecordingConfig& recording = {}, double track_tolerance = 0.0);
   void on_motion(SimTime t, const Robot& r) override;
   void on_sample(SimTime t, const CoverageController& c) override;
-  // A last sample at the end of the run.
+  // A last sample at the end of the run; for robots that mapped Ω, DIR/map.csv: per cell of
+  // Ω's known-area lattice its centre and when the maps first held it (x, y, t; t empty:
+  // never).
   void on_finish(SimTime t, const CoverageController& c) override;
-  // Moves both files into place.
+  // Moves the files into place.
   void commit();
+  // The map's cells (empty when Ω was known).
+  const KnownCells& known_cells() const { return known_; }
 
   const std::vector<RobotTrack>& tracks() const { return tracks_; }
   const std::vector<MetricsSample>& samples() const { return sampler_.samples(); }
@@ -109,6 +124,9 @@ class RunRecorder final : public CoverageObserver {
   };
   std::vector<Pending> pending_;
   MetricsSampler sampler_;
+  std::filesystem::path dir_;
+  std::unique_ptr<AtomicFile> map_;
+  KnownCells known_;
 };
 
 }  // namespace covsim
