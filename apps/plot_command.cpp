@@ -79,6 +79,7 @@ void add_plot_command(CLI::App& app) {
           number_list<std::uint32_t>(o->robots, "--robots", "robot IDs such as 1,4,7");
     const std::filesystem::path d = o->dir;
     const RunFiles run = read_run_files(d);
+    if (!run.known.empty()) scene_options.known = &run.known;
     for (std::uint32_t id : scene_options.robots)
       if (id >= run.outcome.robots.size())
         throw InputError(fmt::format("--robots: robot {} does not exist (the run has {}: 0 to {})",
@@ -92,8 +93,9 @@ void add_plot_command(CLI::App& app) {
     const std::string& video = o->figures.video;
     if (!video.empty()) {
       try {
-        write_run_video(run.scenario, run.outcome, run.tracks(), video,
-                        o->figures.video_settings());
+        VideoOptions settings = o->figures.video_settings();
+        if (!run.known.empty()) settings.known = &run.known;
+        write_run_video(run.scenario, run.outcome, run.tracks(), video, settings);
       } catch (const std::runtime_error& e) {
         throw InputError(fmt::format("--video: {}", e.what()));
       }

@@ -108,7 +108,7 @@ void add_run_command(CLI::App& app) {
     final_file.stream() << final_json(outcome);
     SceneOptions scene_options;
     scene_options.layers = opts->figures.drawn();
-    scene_options.known = &recorder.known_cells();
+    if (!recorder.known_cells().empty()) scene_options.known = &recorder.known_cells();
     scene.stream() << scene_figure(scenario, outcome, recorder.tracks(), scene_options, figure);
     cost.stream() << cost_figure(recorder.samples(), outcome, false, figure);
     recorder.commit();
@@ -138,8 +138,9 @@ void add_run_command(CLI::App& app) {
     const std::string& video = opts->figures.video;
     if (!video.empty()) {
       try {
-        write_run_video(scenario, outcome, recorder.tracks(), video,
-                        opts->figures.video_settings());
+        VideoOptions settings = opts->figures.video_settings();
+        if (!recorder.known_cells().empty()) settings.known = &recorder.known_cells();
+        write_run_video(scenario, outcome, recorder.tracks(), video, settings);
       } catch (const std::runtime_error& e) {
         throw InputError(fmt::format("--video: {}", e.what()));
       }

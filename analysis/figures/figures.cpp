@@ -10,6 +10,7 @@
 #include "analysis/figures/line_chart.hpp"
 #include "analysis/figures/map_legend.hpp"
 #include "analysis/figures/robot_palette.hpp"
+#include "analysis/figures/unknown_area.hpp"
 #include "analysis/records/measure.hpp"
 #include "analysis/records/run_files.hpp"
 #include "geometry/voronoi_partition.hpp"
@@ -89,7 +90,9 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
   const double bottom = axes ? axes_bottom_room(f) : pad;
   const double bar = layers.has(Layer::density) ? view.colour_bar_width(f) : 0;
   const Legend legend =
-      layers.has(Layer::legend) ? map_legend(layers, marks, view, f) : Legend({}, f);
+      layers.has(Layer::legend)
+          ? map_legend(layers, marks, view, f, options.known != nullptr && !options.known->empty())
+          : Legend({}, f);
   const double aspect = MapView::aspect(scenario);
   const bool beside = file.size.height > 0;
   double map_w = w - left - bar - pad, h = file.size.height;
@@ -109,13 +112,8 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
   view.draw_background(c, layers, f);
 
   // What the robots' maps did not yet hold at that time, shaded over Ω.
-  if (options.known != nullptr && layers.has(Layer::obstacles)) {
-    const double half = 0.5 * options.known->size;
-    for (const KnownCell& k : options.known->cells)
-      if (k.since > t1 || (!options.time_window && std::isinf(k.since)))
-        c.rectangle(view.to_px(Vec2{k.centre.x - half, k.centre.y + half}),
-                    view.to_px(Vec2{k.centre.x + half, k.centre.y - half}), marks.unknown());
-  }
+  if (options.known != nullptr && layers.has(Layer::obstacles))
+    shade_unknown(c, view, *options.known, t1);
   // The two partitions at that time, clipped to Ω.
   const CellIntegrator integrator(env, *scenario.density);
   std::vector<Vec2> virt, real;

@@ -8,8 +8,8 @@
 
 #include "analysis/figures/canvas.hpp"
 #include "analysis/figures/layers.hpp"
+#include "analysis/records/known_cells.hpp"
 #include "analysis/records/robot_track.hpp"
-#include "analysis/records/run_recorder.hpp"
 #include "sim/coverage_run.hpp"
 #include "sim/metrics_sample.hpp"
 

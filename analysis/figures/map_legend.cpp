@@ -6,7 +6,8 @@
 
 namespace covsim {
 
-Legend map_legend(const Layers& layers, const Marks& m, const MapView& view, double font) {
+Legend map_legend(const Layers& layers, const Marks& m, const MapView& view, double font,
+                  bool unknown_area) {
   std::vector<LegendEntry> e;
   const Vec2 half{0.9 * font, 0};
   const auto line = [half](Stroke s) {
@@ -39,6 +40,11 @@ Legend map_legend(const Layers& layers, const Marks& m, const MapView& view, dou
     e.push_back({"obstacle", [half](Canvas& c, Vec2 p) {
                    c.rectangle(p - half - Vec2{0, 0.4 * half.x}, p + half + Vec2{0, 0.4 * half.x},
                                Marks::obstacle());
+                 }});
+  if (layers.has(Layer::obstacles) && unknown_area)
+    e.push_back({"not yet mapped", [half](Canvas& c, Vec2 p) {
+                   c.rectangle(p - half - Vec2{0, 0.4 * half.x}, p + half + Vec2{0, 0.4 * half.x},
+                               Marks::unknown());
                  }});
   if (layers.has(Layer::density))
     e.push_back({view.uniform() ? "uniform density φ" : "density φ",

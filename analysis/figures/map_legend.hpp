@@ -9,6 +9,8 @@
 namespace covsim {
 
 // `view` must outlive the legend (the density's swatch is drawn from it).
-Legend map_legend(const Layers& layers, const Marks& marks, const MapView& view, double font);
+// unknown_area: the robots mapped Ω, and what they did not know yet is shaded.
+Legend map_legend(const Layers& layers, const Marks& marks, const MapView& view, double font,
+                  bool unknown_area = false);
 
 }  // namespace covsim

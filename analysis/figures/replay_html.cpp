@@ -129,6 +129,15 @@ std::string data_literal(const RunFiles& run, std::size_t max_frames) {
   fmt::format_to(std::back_inserter(out), "],\"key_colours\":[\"{}\",\"{}\",\"{}\"]",
                  colour_hex(robot_colour(0)), colour_hex(robot_colour(1)),
                  colour_hex(robot_colour(2)));
+  // Robots that mapped Ω: the map's cells and when they became known (-1: never), shaded
+  // while not yet known.
+  fmt::format_to(std::back_inserter(out), ",\"map\":{{\"size\":{},\"cells\":[", run.known.size);
+  for (std::size_t k = 0; k < run.known.cells.size(); ++k) {
+    const KnownCell& c = run.known.cells[k];
+    fmt::format_to(std::back_inserter(out), "{}{},{},{}", k > 0 ? "," : "", c.centre.x, c.centre.y,
+                   std::isinf(c.since) ? -1.0 : c.since);
+  }
+  out += "]}";
   out += ",\"times\":[";
   const std::size_t stride =
       frames.size() <= max_frames ? 1 : (frames.size() + max_frames - 2) / (max_frames - 1);
@@ -207,7 +216,7 @@ const slider = $("slider"), canvas = $("view"), ctx = canvas.getContext("2d");
 const costCanvas = $("cost"), cctx = costCanvas.getContext("2d");
 const keyCanvas = $("key"), kctx = keyCanvas.getContext("2d");
 const statusBox = $("status"), timeLabel = $("time");
-const INK = "#222222", OBSTACLE = "#4a4a4a", CELLS = "#1f5fbf", PROJECTED = "#ffd21f";
+const INK = "#222222", OBSTACLE = "#4a4a4a", CELLS = "#1f5fbf", PROJECTED = "#ffd21f", UNKNOWN = "rgba(107, 122, 153, 0.45)";
 const FONT = "12px 'DejaVu Sans', sans-serif";
 $("subtitle").textContent = D.robots + (D.robots === 1 ? " robot, " : " robots, ") + D.frames.length + " frames to t = " +
   D.times[D.times.length - 1].toFixed(1) + " s";
@@ -410,6 +419,12 @@ function draw(f) {
   if (densityImage && densityImage.complete && densityImage.naturalWidth > 0)
     ctx.drawImage(densityImage, X(D.density.lo[0]), Y(D.density.hi[1]),
                   X(D.density.hi[0]) - X(D.density.lo[0]), Y(D.density.lo[1]) - Y(D.density.hi[1]));
+  // What the maps did not hold yet at this frame's time.
+  ctx.fillStyle = UNKNOWN;
+  const half = D.map.size / 2, mc = D.map.cells;
+  for (let k = 0; k < mc.length; k += 3)
+    if (mc[k + 2] < 0 || mc[k + 2] > D.times[f])
+      ctx.fillRect(X(mc[k] - half), Y(mc[k + 1] + half), X(mc[k] + half) - X(mc[k] - half), Y(mc[k + 1] - half) - Y(mc[k + 1] + half));
   const gens = [];
   for (let i = 0; i < D.robots; i++) { const r = robot(f, i); gens.push([r[2], r[3]]); }
   ctx.strokeStyle = CELLS; ctx.lineWidth = 1.3; ctx.setLineDash([]); drawnCells = 0;

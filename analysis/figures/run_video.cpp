@@ -18,6 +18,7 @@
 #include "analysis/figures/figures.hpp"
 #include "analysis/figures/map_legend.hpp"
 #include "analysis/figures/robot_palette.hpp"
+#include "analysis/figures/unknown_area.hpp"
 #include "geometry/voronoi_partition.hpp"
 #include "sim/progress_line.hpp"
 
@@ -150,16 +151,18 @@ Layers frame_layers(Layers layers) {
 class FrameDrawer {
  public:
   FrameDrawer(const Scenario& scenario, const std::vector<RobotTrack>& tracks, int width,
-              const Layers& layers)
+              const Layers& layers, const KnownCells* known)
       : scenario_(scenario),
+        known_(known),
         tracks_(tracks),
         layers_(frame_layers(layers)),
         // Text of 14 pixels in a frame 960 wide, never under 8.
         font_(std::max(8.0, 14.0 * width / 960.0)),
         marks_{font_ / 10},
         view_(scenario),
-        legend_(layers_.has(Layer::legend) ? map_legend(layers_, marks_, view_, font_)
-                                           : Legend({}, font_)),
+        legend_(layers_.has(Layer::legend)
+                    ? map_legend(layers_, marks_, view_, font_, known != nullptr && !known->empty())
+                    : Legend({}, font_)),
         integrator_(*scenario.environment, *scenario.density),
         name_(scenario_name(scenario.source)) {
     const double pad = 0.6 * font_;
@@ -183,6 +186,7 @@ class FrameDrawer {
     c.rectangle({0, 0}, {c.width(), c.height()}, Colour::hex(0xffffff));
     view_.draw_background(c, layers_, font_);
     const auto has = [&](Layer l) { return layers_.has(l); };
+    if (known_ != nullptr && has(Layer::obstacles)) shade_unknown(c, view_, *known_, t);
     if (has(Layer::cells) && !tracks_.empty()) {
       std::vector<Vec2> virt;
       for (const RobotTrack& k : tracks_)
@@ -224,6 +228,7 @@ class FrameDrawer {
 
  private:
   const Scenario& scenario_;
+  const KnownCells* known_;
   const std::vector<RobotTrack>& tracks_;
   Layers layers_;
   double font_;
@@ -270,7 +275,8 @@ void write_run_video(const Scenario& scenario, const CoverageOutcome& outcome,
     throw std::runtime_error(file.string() + ": a video is .mp4 or .gif");
   if (!(options.fps > 0) || !(options.fps <= 240))
     throw std::runtime_error("video frame rate must be in (0, 240]");
-  FrameDrawer frames_of(scenario, tracks, std::max(160, options.width) / 2 * 2, options.layers);
+  FrameDrawer frames_of(scenario, tracks, std::max(160, options.width) / 2 * 2, options.layers,
+                        options.known);
   const int w = frames_of.width(), h = frames_of.height();
   const double end = outcome.sim_time.seconds();
   const std::size_t frames = video_frames(end, options);

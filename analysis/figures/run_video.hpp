@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/figures/layers.hpp"
+#include "analysis/records/known_cells.hpp"
 #include "analysis/records/robot_track.hpp"
 #include "sim/coverage_run.hpp"
 
@@ -18,7 +19,8 @@ struct VideoOptions {
   double speedup = 0.0;
   int width = 960;                // pixels (the height follows Ω's aspect)
   Layers layers = Layers::all();  // of these, what a frame shows (not virtual paths or real cells)
-  bool progress = false;          // a progress line on stderr, when it is a terminal
+  const KnownCells* known = nullptr;  // robots that mapped Ω: what they did not know yet, shaded
+  bool progress = false;              // a progress line on stderr, when it is a terminal
 };
 
 // The number of frames a run of `sim_time` seconds gives.

@@ -215,6 +215,15 @@ RunFiles read_run_files(const fs::path& dir) {
       columns[k]->set(s, v[k]);
     f.samples.push_back(s);
   });
+  // map.csv: the cells' size is the lattice's over Ω's box.
+  const fs::path map = dir / "map.csv";
+  if (fs::exists(map)) {
+    const Vec2 box = f.scenario.environment->bounds().size();
+    f.known.size = std::max(box.x, box.y) / std::floor(f.scenario.coverage.mapping.cells);
+    read_csv(map, "x,y,t", 3, [&](const std::vector<double>& v) {
+      f.known.cells.push_back({{v[0], v[1]}, v[2]});
+    });
+  }
   return f;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/records/known_cells.hpp"
 #include "analysis/records/robot_track.hpp"
 #include "analysis/records/run_recorder.hpp"
 #include "sim/coverage_run.hpp"
@@ -17,6 +18,7 @@ struct RunFiles {
   CoverageOutcome outcome;  // what final.json holds
   std::vector<TrajectoryRow> trajectory;
   std::vector<MetricsSample> samples;  // the cost columns of metrics.csv
+  KnownCells known;                    // map.csv, when the robots mapped Ω
   // Each robot's track, as RunRecorder kept it.
   std::vector<RobotTrack> tracks() const;
 };
@@ -26,8 +28,8 @@ struct RunFiles {
 nlohmann::json portable_scenario(const Scenario& scenario, const std::filesystem::path& dir);
 
 // Whether a file name in a run folder is one of the run's records (scenario.json, final.json,
-// trajectory.csv or trajectory.csv.gz, metrics.csv, or a .partial file being written): a new
-// run into the folder replaces these (and the figures: is_run_output in
+// trajectory.csv or trajectory.csv.gz, metrics.csv, map.csv, or a .partial file being written): a
+// new run into the folder replaces these (and the figures: is_run_output in
 // analysis/figures/figures.hpp), and keeps anything else.
 bool is_record_file(const std::string& name);
 

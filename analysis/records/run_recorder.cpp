@@ -181,8 +181,7 @@ void RunRecorder::on_finish(SimTime t, const CoverageController& c) {
         const Vec2 p = free.centre(i, j);
         const double since = m->known_since(i, j);
         known_.cells.push_back({p, std::isnan(since) ? INFINITY : since});
-        text += std::isnan(since) ? fmt::format("{},{},\n", p.x, p.y)
-                                  : fmt::format("{},{},{}\n", p.x, p.y, since);
+        text += fmt::format("{},{},{}\n", p.x, p.y, std::isnan(since) ? INFINITY : since);
       }
     }
     map_->stream() << text;

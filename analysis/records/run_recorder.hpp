@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/records/known_cells.hpp"
 #include "analysis/records/robot_track.hpp"
 #include "io/atomic_file.hpp"
 #include "robot/coverage_controller.hpp"
@@ -75,17 +76,6 @@ class GzipWriter {
   bool finished_ = false;
 };
 
-// A cell of the known-area lattice whose centre lies in Ω, and when the robots' maps together
-// first held it (robot/mapping.hpp; infinite: never).
-struct KnownCell {
-  Vec2 centre;
-  double since;
-};
-struct KnownCells {
-  double size = 0.0;  // m, a cell's side
-  std::vector<KnownCell> cells;
-};
-
 class RunRecorder final : public CoverageObserver {
  public:
   // recording: the scenario's (the trajectory period: seconds between a robot's rows, 0 for
@@ -97,7 +87,7 @@ class RunRecorder final : public CoverageObserver {
   void on_motion(SimTime t, const Robot& r) override;
   void on_sample(SimTime t, const CoverageController& c) override;
   // A last sample at the end of the run; for robots that mapped Ω, DIR/map.csv: per cell of
-  // Ω's known-area lattice its centre and when the maps first held it (x, y, t; t empty:
+  // Ω's known-area lattice its centre and when the maps first held it (x, y, t; t inf:
   // never).
   void on_finish(SimTime t, const CoverageController& c) override;
   // Moves the files into place.

@@ -1,7 +1,7 @@
 // Golden fingerprints of variants beyond the paper's ideal-network scenarios: lossy and
 // delayed networks of every model, range and line-of-sight limits, noisy and sampled
 // sensors, every planner and controller, non-uniform densities, and bodies, avoidance,
-// kinematics and localization. A change that alters
+// kinematics, localization and robots that map an unknown Ω. A change that alters
 // any of these runs changes its fingerprint: update them deliberately and say why in the
 // commit message. A refactor must leave every one unchanged.
 #include <catch2/catch.hpp>
@@ -96,6 +96,20 @@ const Variant kVariants[] = {
          "network": {"loss": {"model": "bernoulli", "p": 0.2}},
          "controller": {"projection": "known"}})",
      "c14014b8ff05316c"},
+    {"unknown Ω (none), short range, one shared map", "u_shape.json",
+     R"({"environment": {"known": "none"}, "sensor": {"range": 0.3},
+         "mapping": {"compare_known": false}})",
+     "49f43c30671ae2c4"},
+    {"unknown holes (boundary), maps shared under loss in small messages", "two_obstacles.json",
+     R"({"environment": {"known": "boundary"}, "sensor": {"range": 0.5},
+         "network": {"loss": {"model": "bernoulli", "p": 0.3}},
+         "mapping": {"max_bytes": 200, "compare_known": false}})",
+     "33430926bfac656a"},
+    {"office unknown (none), decentralized under loss", "office.json",
+     R"({"environment": {"known": "none"}, "sensor": {"range": 2},
+         "network": {"loss": {"model": "bernoulli", "p": 0.1}},
+         "mapping": {"compare_known": false}, "convergence": {"max_time": 40}})",
+     "e9da43219fdd4957"},
 };
 
 Scenario variant(const Variant& v) {

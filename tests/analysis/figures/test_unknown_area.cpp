@@ -1,0 +1,85 @@
+// Robots that mapped Ω: map.csv records when each cell became known, a run folder reads it
+// back, and the scene shades exactly the cells not known at the figure's time.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "analysis/figures/figures.hpp"
+#include "analysis/records/final_json.hpp"
+#include "analysis/records/run_files.hpp"
+#include "analysis/records/run_recorder.hpp"
+#include "tests/robot/paper_scenarios.hpp"
+#include "tests/scratch_files.hpp"
+
+using namespace covsim;
+
+namespace {
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("map.csv holds when each cell became known, and the scene shades the rest",
+          "[figures][mapping]") {
+  nlohmann::json j = covsim::test::paper("u_shape.json").json;
+  j["environment"]["known"] = "none";
+  j["sensor"]["range"] = 0.3;
+  j["mapping"] = {{"compare_known", false}};
+  const Scenario s = covsim::test::parse_beside_paper(j, "u_shape.json");
+  const auto dir = covsim::test::scratch_dir("unknown-area");
+  RunRecorder recorder(dir, s.robot_positions, s.recording);
+  const CoverageOutcome out = run_coverage(s, &recorder);
+  recorder.commit();
+  const KnownCells& kept = recorder.known_cells();
+  REQUIRE_FALSE(kept.empty());
+  CHECK(kept.size == Approx(1.0 / 200));
+  const double end = out.sim_time.seconds();
+  for (const KnownCell& c : kept.cells)
+    CHECK((std::isinf(c.since) || (c.since >= 0.0 && c.since <= end)));
+  // The map grows: fewer cells known early than at the end.
+  const auto known_by = [&](double t) {
+    return std::count_if(kept.cells.begin(), kept.cells.end(),
+                         [t](const KnownCell& c) { return c.since <= t; });
+  };
+  CHECK(known_by(0.0) > 0);
+  CHECK(known_by(5.0) < known_by(end));
+  CHECK(static_cast<double>(known_by(end)) / static_cast<double>(kept.cells.size()) ==
+        Approx(out.known_fraction).margin(1e-12));
+
+  // Read back from the run folder as written, to the last digit.
+  const std::string csv = covsim::test::file_text(dir / "map.csv");
+  CHECK(csv.rfind("x,y,t\n", 0) == 0);
+  CHECK(count(csv, "\n") == kept.cells.size() + 1);
+  std::ofstream(dir / "scenario.json")
+      << portable_scenario(s, std::string(COVSIM_SOURCE_DIR) + "/scenarios").dump(2);
+  std::ofstream(dir / "final.json") << final_json(out);
+  const RunFiles run = read_run_files(dir);
+  CHECK(run.known.size == Approx(kept.size).epsilon(1e-12));
+  REQUIRE(run.known.cells.size() == kept.cells.size());
+  for (std::size_t k = 0; k < kept.cells.size(); ++k) {
+    CHECK(run.known.cells[k].centre == kept.cells[k].centre);
+    CHECK(run.known.cells[k].since == kept.cells[k].since);
+  }
+
+  // The scene at 5 s shades the cells not yet known then (and the legend's swatch).
+  SceneOptions options;
+  options.known = &kept;
+  options.time_window = std::pair{0.0, 5.0};
+  const FigureFile file;  // SVG
+  const std::string early = scene_figure(s, out, recorder.tracks(), options, file);
+  const auto unknown_at_5 = static_cast<std::size_t>(std::count_if(
+      kept.cells.begin(), kept.cells.end(), [](const KnownCell& c) { return c.since > 5.0; }));
+  REQUIRE(unknown_at_5 > 100);
+  CHECK(count(early, "fill-opacity:0.45") == unknown_at_5 + 1);
+  // Without the map, nothing shaded.
+  options.known = nullptr;
+  CHECK(count(scene_figure(s, out, recorder.tracks(), options, file), "fill-opacity:0.45") == 0);
+}
