@@ -31,6 +31,28 @@ done
 /usr/bin/python3 -c "assert $(json sync/final.json "['network']['delivery_ratio']") < 0.1" ||
   fail "synchronised broadcasts did not collide: $(json sync/final.json "['network']")"
 
+# Robots that map the room share their maps over the radio: every broadcast reserves the map's
+# bytes (its size is announced before its content), the maps merge, the run converges; a map
+# payload past 802.11's largest MSDU is exit 2 naming mapping.max_bytes.
+"$covsim" run "$src/scenarios/two_obstacles.json" --set "$radio" --set environment.known=none \
+  --set sensor.range=0.5 --set mapping.compare_known=false --out mapped >/dev/null ||
+  fail "the mapping run failed"
+[ "$(json mapped/final.json "['converged']")" = True ] || fail "the mapping run did not converge"
+/usr/bin/python3 -c "assert $(json mapped/final.json "['mapping']['bytes']") > 0" ||
+  fail "no map bytes went over the radio"
+[ "$(json mapped/final.json "['mapping']['obstacles_known_min']")" = 2 ] ||
+  fail "a robot did not learn both obstacles: $(json mapped/final.json "['mapping']")"
+"$covsim" run "$src/scenarios/two_obstacles.json" --set "$radio" --out unmapped >/dev/null
+/usr/bin/python3 -c "assert $(json mapped/final.json "['network']['channel_occupancy']") > \
+  1.5 * $(json unmapped/final.json "['network']['channel_occupancy']")" ||
+  fail "map payloads did not lengthen the frames"
+set +e
+"$covsim" run "$src/scenarios/two_obstacles.json" --set "$radio" --set environment.known=none \
+  --set mapping.max_bytes=4000 --out too_big >/dev/null 2>err.txt
+code=$?
+set -e
+[ $code = 2 ] && grep -q "mapping.max_bytes" err.txt || fail "a too large map payload: exit $code"
+
 # A sweep's runs, each with its own peer, are the same at any parallelism.
 cat > sweep.json <<JSON
 {"scenario": "$src/scenarios/u_shape.json",
