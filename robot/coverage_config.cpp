@@ -147,7 +147,13 @@ ConfigKeys<CoverageConfig> mapping_keys() {
                                  "also run the scenario with Ω known from the same starts and "
                                  "seed, for mapping.cost_ratio")
                   .defaults_to(d.mapping.compare_known),
-              &CoverageConfig::mapping, &MappingConfig::compare_known)};
+              &CoverageConfig::mapping, &MappingConfig::compare_known),
+          member_key<CoverageConfig>(
+              ParamSpec::boolean("robot_maps",
+                                 "map.csv also holds when each robot's own map first held each "
+                                 "cell (decentralized runs), for figures of one robot's map")
+                  .defaults_to(d.mapping.robot_maps),
+              &CoverageConfig::mapping, &MappingConfig::robot_maps)};
 }
 
 ConfigKeys<CoverageConfig> sensor_keys() {

@@ -83,6 +83,7 @@ struct MappingConfig {
   double max_bytes = 1024;    // map bytes a broadcast carries at most
   double cells = 200;         // known-area lattice cells across Ω's box
   bool compare_known = true;  // also run with Ω known, for the cost ratio
+  bool robot_maps = false;    // keep when each robot's own map held each cell
   bool unknown() const { return known != KnownEnvironment::full; }
   friend bool operator==(const MappingConfig&, const MappingConfig&) = default;
 };

@@ -75,6 +75,7 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   if (config_.mapping.unknown())
     mapping_ = std::make_unique<Mapping>(env, density, config_.radius, config_.sensor.range,
                                          config_.mapping, starts.size(), ideal);
+  if (mapping_) mapping_->set_clock([this] { return kernel_.now(); });
   if (ideal) {
     view_ = std::make_unique<IdealView>(*state_);
   } else {

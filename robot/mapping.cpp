@@ -35,6 +35,8 @@ Mapping::Mapping(const Environment& env, const Density& density, double radius, 
                  0};
     maps_.push_back(std::move(map));
   }
+  if (config.robot_maps && maps > 1)
+    robot_time_.assign(maps, std::vector<double>(merged_time_.size(), NAN));
 }
 
 Mapping::~Mapping() = default;
@@ -86,18 +88,26 @@ void Mapping::take(std::uint32_t i, Vec2 p, SimTime t) {
     for (const std::size_t k : fresh_)
       merged_time_[k] = t.seconds();
     scans_.push_back(std::move(part));
-    add(maps_[map_of(i)], s);
+    add(map_of(i), s, t);
   }
   note_merged(t);
 }
 
-void Mapping::add(RobotMap& m, std::uint32_t s) {
+void Mapping::add(std::size_t index, std::uint32_t s, SimTime t) {
+  RobotMap& m = maps_[index];
   if (m.holds.size() <= s) m.holds.resize(scans_.size(), false);
   if (m.holds[s]) return;
   m.holds[s] = true;
   m.order.push_back(s);
   const Scan& scan = scans_[s];
-  m.lattice.fill(scan.fan);
+  if (robot_time_.empty()) {
+    m.lattice.fill(scan.fan);
+  } else {
+    fresh_.clear();
+    m.lattice.fill(scan.fan, &fresh_);
+    for (const std::size_t k : fresh_)
+      robot_time_[index][k] = t.seconds();
+  }
   if (!m.walls.add(scan)) return;
   bool changed = false;
   for (std::size_t e = 0; e < elements_.size(); ++e) {
@@ -144,9 +154,9 @@ MapPayload Mapping::pack(std::uint32_t sender) {
 
 void Mapping::merge(std::uint32_t receiver, const MapPayload& payload) {
   if (!payload.scans) return;
-  RobotMap& m = maps_[map_of(receiver)];
+  const SimTime t = now_ ? now_() : SimTime::zero();
   for (const std::uint32_t s : *payload.scans)
-    add(m, s);
+    add(map_of(receiver), s, t);
 }
 
 double Mapping::known_fraction() const {

@@ -16,6 +16,7 @@
 // hears. Readings are kept run-wide once; a message carries their numbers and is counted at
 // the size a robot would send them (Scan::bytes()).
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -60,6 +61,8 @@ class Mapping final : public MapExchange {
 
   MapPayload pack(std::uint32_t sender) override;
   void merge(std::uint32_t receiver, const MapPayload& payload) override;
+  // The networked view merges at delivery; the time stamps the robots' own maps.
+  void set_clock(std::function<SimTime()> now) { now_ = std::move(now); }
   std::uint64_t payload_limit() const override { return config_.max_bytes; }
 
   // Measures, of the cells whose centre lies in Ω (KnownLattice::of_free_space).
@@ -71,6 +74,13 @@ class Mapping final : public MapExchange {
   double known_since(std::int32_t i, std::int32_t j) const {
     return merged_time_[static_cast<std::size_t>(j) * static_cast<std::size_t>(merged_.nx()) +
                         static_cast<std::size_t>(i)];
+  }
+  // With mapping.robot_maps and a map per robot: when robot r's own map first held cell
+  // (i, j) (NaN: never); empty otherwise.
+  bool has_robot_times() const { return !robot_time_.empty(); }
+  double known_since(std::uint32_t r, std::int32_t i, std::int32_t j) const {
+    return robot_time_[r][static_cast<std::size_t>(j) * static_cast<std::size_t>(merged_.nx()) +
+                          static_cast<std::size_t>(i)];
   }
   // The fraction of Ω's free area known: merged over the robots, and robot i's own.
   double known_fraction() const;
@@ -103,7 +113,7 @@ class Mapping final : public MapExchange {
   std::size_t map_of(std::uint32_t i) const { return maps_.size() == 1 ? 0 : i; }
   void take(std::uint32_t i, Vec2 p, SimTime t);
   // Adds scan s to map m, updating its belief if an obstacle became known.
-  void add(RobotMap& m, std::uint32_t s);
+  void add(std::size_t m, std::uint32_t s, SimTime t);
   std::shared_ptr<const Belief> belief_for(const std::vector<bool>& known);
   void note_merged(SimTime t);
 
@@ -118,11 +128,13 @@ class Mapping final : public MapExchange {
   std::vector<double> travelled_;  // per robot, since its last reading
   std::map<std::vector<bool>, std::shared_ptr<const Belief>> beliefs_;
   KnownLattice free_cells_, merged_;
-  std::vector<double> merged_time_;  // per cell, s
+  std::vector<double> merged_time_;              // per cell, s
+  std::vector<std::vector<double>> robot_time_;  // per robot map and cell, s (robot_maps)
   std::vector<std::size_t> fresh_;
   std::uint64_t free_count_ = 0;
   std::optional<SimTime> time_90_, time_100_;
   std::uint64_t bytes_sent_ = 0, belief_changes_ = 0;
+  std::function<SimTime()> now_;
 };
 
 }  // namespace covsim

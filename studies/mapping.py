@@ -139,7 +139,8 @@ def fraction_cell(v):
 
 
 COLUMNS = [
-    ("known", False), ("range [m]", True), ("loss p", True), ("converged", True),
+    ("known", False), ("range [m]", True), ("loss p", True), ("distinct runs", True),
+    ("converged", True),
     ("time to 1% [s]", True), ("cost / Ω known", True), ("mapped 90% [s]", True),
     ("mapped 100% [s]", True), ("least map [fraction]", True), ("obstacles, least map", True),
     ("disagreement", True), ("map MB sent", True), ("discoveries", True)]
@@ -148,6 +149,7 @@ COLUMNS = [
 def row(known, rng, loss, runs):
     m = [r["mapping"] for r in runs]
     return [known, range_text(rng), loss_text(loss),
+            f"{len({r['fingerprint'] for r in runs})}",
             f"{sum(r['converged'] for r in runs)}/{len(runs)}",
             mean_sd(values(runs, lambda r: r["convergence"]["time_to_1_percent"]), "%.0f"),
             mean_sd([x["cost_ratio"] for x in m], "%.3f"),

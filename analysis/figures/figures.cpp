@@ -113,7 +113,11 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
 
   // What the robots' maps did not yet hold at that time, shaded over Ω.
   if (options.known != nullptr && layers.has(Layer::obstacles))
-    shade_unknown(c, view, *options.known, t1);
+    // One robot drawn, whose own map was kept: its map; else the robots' maps together.
+    shade_unknown(c, view, *options.known, t1,
+                  options.robots.size() == 1 && options.robots[0] < options.known->robots.size()
+                      ? std::optional<std::uint32_t>(options.robots[0])
+                      : std::nullopt);
   // The two partitions at that time, clipped to Ω.
   const CellIntegrator integrator(env, *scenario.density);
   std::vector<Vec2> virt, real;

@@ -21,7 +21,8 @@ struct SceneOptions {
   std::vector<std::uint32_t> robots;                     // the robots drawn; empty: all
   Layers layers = Layers::all();                         // what is drawn
   // Robots that mapped Ω: the map's cells; those not yet known at the figure's time are
-  // shaded (with the obstacles layer). Null or empty: Ω was known.
+  // shaded (with the obstacles layer): to the robots together, or, with one robot drawn and
+  // its own map kept (mapping.robot_maps), to it. Null or empty: Ω was known.
   const KnownCells* known = nullptr;
 };
 

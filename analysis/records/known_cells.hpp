@@ -18,6 +18,9 @@ struct KnownCell {
 struct KnownCells {
   double size = 0.0;  // m, a cell's side
   std::vector<KnownCell> cells;
+  // With mapping.robot_maps (decentralized runs): per robot, when its own map first held each
+  // cell, parallel to `cells` (infinite: never); empty otherwise.
+  std::vector<std::vector<double>> robots;
   bool empty() const { return cells.empty(); }
 };
 

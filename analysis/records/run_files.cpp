@@ -220,8 +220,16 @@ RunFiles read_run_files(const fs::path& dir) {
   if (fs::exists(map)) {
     const Vec2 box = f.scenario.environment->bounds().size();
     f.known.size = std::max(box.x, box.y) / std::floor(f.scenario.coverage.mapping.cells);
-    read_csv(map, "x,y,t", 3, [&](const std::vector<double>& v) {
+    // Per robot columns r0, r1, ... after t, with mapping.robot_maps.
+    std::string header;
+    LineReader(map).next(header);
+    const std::size_t robots =
+        static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')) - 2;
+    f.known.robots.assign(robots, {});
+    read_csv(map, "x,y,t", 3 + robots, [&](const std::vector<double>& v) {
       f.known.cells.push_back({{v[0], v[1]}, v[2]});
+      for (std::size_t r = 0; r < robots; ++r)
+        f.known.robots[r].push_back(v[3 + r]);
     });
   }
   return f;

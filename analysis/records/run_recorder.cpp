@@ -174,14 +174,26 @@ void RunRecorder::on_finish(SimTime t, const CoverageController& c) {
     const KnownLattice& free = m->free_cells();
     known_.size = free.cell();
     map_ = std::make_unique<AtomicFile>(dir_ / "map.csv");
-    std::string text = "x,y,t\n";
+    const auto robots = static_cast<std::uint32_t>(m->has_robot_times() ? c.robots().size() : 0);
+    known_.robots.assign(robots, {});
+    std::string text = "x,y,t";
+    for (std::uint32_t r = 0; r < robots; ++r)
+      text += fmt::format(",r{}", r);
+    text += "\n";
+    const auto never = [](double since) { return std::isnan(since) ? INFINITY : since; };
     for (std::int32_t j = 0; j < free.ny(); ++j) {
       for (std::int32_t i = 0; i < free.nx(); ++i) {
         if (!free.at(i, j)) continue;
         const Vec2 p = free.centre(i, j);
-        const double since = m->known_since(i, j);
-        known_.cells.push_back({p, std::isnan(since) ? INFINITY : since});
-        text += fmt::format("{},{},{}\n", p.x, p.y, std::isnan(since) ? INFINITY : since);
+        const double since = never(m->known_since(i, j));
+        known_.cells.push_back({p, since});
+        text += fmt::format("{},{},{}", p.x, p.y, since);
+        for (std::uint32_t r = 0; r < robots; ++r) {
+          const double own = never(m->known_since(r, i, j));
+          known_.robots[r].push_back(own);
+          text += fmt::format(",{}", own);
+        }
+        text += "\n";
       }
     }
     map_->stream() << text;

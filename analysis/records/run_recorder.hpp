@@ -87,8 +87,8 @@ class RunRecorder final : public CoverageObserver {
   void on_motion(SimTime t, const Robot& r) override;
   void on_sample(SimTime t, const CoverageController& c) override;
   // A last sample at the end of the run; for robots that mapped Ω, DIR/map.csv: per cell of
-  // Ω's known-area lattice its centre and when the maps first held it (x, y, t; t inf:
-  // never).
+  // Ω's known-area lattice its centre and when the maps first held it (x, y, t; inf: never),
+  // and with mapping.robot_maps when each robot's own did (r0, r1, ...).
   void on_finish(SimTime t, const CoverageController& c) override;
   // Moves the files into place.
   void commit();

@@ -83,3 +83,45 @@ TEST_CASE("map.csv holds when each cell became known, and the scene shades the r
   options.known = nullptr;
   CHECK(count(scene_figure(s, out, recorder.tracks(), options, file), "fill-opacity:0.45") == 0);
 }
+
+TEST_CASE("with robot_maps map.csv holds each robot's own map, never ahead of the readings",
+          "[figures][mapping]") {
+  nlohmann::json j = covsim::test::paper("two_obstacles.json").json;
+  j["environment"]["known"] = "none";
+  j["sensor"]["range"] = 0.3;
+  j["network"] = {{"loss", {{"model", "bernoulli"}, {"p", 0.5}}}};
+  j["mapping"] = {{"compare_known", false}, {"robot_maps", true}};
+  const Scenario s = covsim::test::parse_beside_paper(j, "two_obstacles.json");
+  const auto dir = covsim::test::scratch_dir("robot-maps");
+  RunRecorder recorder(dir, s.robot_positions, s.recording);
+  const CoverageOutcome out = run_coverage(s, &recorder);
+  recorder.commit();
+  const KnownCells& kept = recorder.known_cells();
+  REQUIRE(kept.robots.size() == out.robots.size());
+  std::size_t later = 0;
+  for (std::size_t r = 0; r < kept.robots.size(); ++r) {
+    REQUIRE(kept.robots[r].size() == kept.cells.size());
+    for (std::size_t n = 0; n < kept.cells.size(); ++n) {
+      // A robot's map holds a cell once some reading showed it, and then only once the
+      // reading reached it: never before the maps together did.
+      CHECK(kept.robots[r][n] >= kept.cells[n].since);
+      if (kept.robots[r][n] > kept.cells[n].since) ++later;
+    }
+  }
+  CHECK(later > 0);  // readings took time to travel, and some were lost
+  std::ofstream(dir / "scenario.json")
+      << portable_scenario(s, std::string(COVSIM_SOURCE_DIR) + "/scenarios").dump(2);
+  std::ofstream(dir / "final.json") << final_json(out);
+  const RunFiles run = read_run_files(dir);
+  REQUIRE(run.known.robots.size() == kept.robots.size());
+  CHECK(run.known.robots == kept.robots);
+  // One robot drawn: its own map shaded.
+  SceneOptions options;
+  options.known = &kept;
+  options.robots = {2};
+  options.time_window = std::pair{0.0, 3.0};
+  const auto own_unknown = static_cast<std::size_t>(std::count_if(
+      kept.robots[2].begin(), kept.robots[2].end(), [](double t) { return t > 3.0; }));
+  CHECK(count(scene_figure(s, out, recorder.tracks(), options, FigureFile{}),
+              "fill-opacity:0.45") == own_unknown + 1);
+}
