@@ -21,7 +21,7 @@
 namespace covsim {
 
 // Changes whenever a registry entry or an extension interface changes incompatibly.
-inline constexpr int kPluginApiVersion = 5;
+inline constexpr int kPluginApiVersion = 6;
 
 // The registries of component_sections(), by name, for plugins; built from that table (in its
 // order, which the members' types check), so that it stays the one list of them.
