@@ -8,7 +8,8 @@
 // is the wall time on an idle core and, unlike wall time, holds still on a shared machine.
 // Decentralized runs also count `messages_per_robot_s`, the messages a robot reads per
 // simulated second. BM_ScaleRunBodies gives the robots bodies, BM_ScaleRunAvoidance ORCA too;
-// BM_ScaleRunTracking gives them a tracking system's estimates.
+// BM_ScaleRunTracking gives them a tracking system's estimates; BM_ScaleRunMapping has them map
+// an unknown Ω, against BM_ScaleRunRange (the same sensor range, Ω known).
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
@@ -97,6 +98,42 @@ void BM_ScaleRunTracking(benchmark::State& state) {
   run(state, parse(json));
 }
 
+// Robots that know only Ω's bounding box (environment.known none) and map it with a 1 m range:
+// the readings, their fans on the lattice, the beliefs built as obstacles become known, and
+// each robot's cell computed in its belief (no shared partition). Decentralized, the same
+// with the maps' readings in the broadcasts, beside BM_ScaleRunDecentralized.
+nlohmann::ordered_json mapping(std::size_t n) {
+  nlohmann::ordered_json json = scale_json(n);
+  json["environment"]["known"] = "none";
+  json["sensor"] = {{"range", 1.0}};
+  json["mapping"] = {{"compare_known", false}};
+  return json;
+}
+
+void BM_ScaleRunMapping(benchmark::State& state) {
+  run(state, parse(mapping(static_cast<std::size_t>(state.range(0)))));
+}
+
+void BM_ScaleRunMappingDecentralized(benchmark::State& state) {
+  nlohmann::ordered_json json = mapping(static_cast<std::size_t>(state.range(0)));
+  json["network"] = {{"range", 3.0 * kSpacing}};
+  run(state, parse(json));
+}
+
+// BM_ScaleRun with the same 1 m range: the baseline of the mapping runs.
+void BM_ScaleRunRange(benchmark::State& state) {
+  nlohmann::ordered_json json = scale_json(static_cast<std::size_t>(state.range(0)));
+  json["sensor"] = {{"range", 1.0}};
+  run(state, parse(json));
+}
+
+void BM_ScaleRunRangeDecentralized(benchmark::State& state) {
+  nlohmann::ordered_json json = scale_json(static_cast<std::size_t>(state.range(0)));
+  json["sensor"] = {{"range", 1.0}};
+  json["network"] = {{"range", 3.0 * kSpacing}};
+  run(state, parse(json));
+}
+
 void BM_DelaunayPerTick(benchmark::State& state) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   const covsim::Scenario s = parse(scale_json(static_cast<std::size_t>(state.range(0))));
@@ -118,4 +155,8 @@ BENCHMARK(BM_ScaleRunDecentralized)->Arg(100)->Arg(1000)->Arg(10000)->Unit(bench
 BENCHMARK(BM_ScaleRunBodies)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunAvoidance)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunTracking)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScaleRunRange)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScaleRunMapping)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScaleRunRangeDecentralized)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScaleRunMappingDecentralized)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DelaunayPerTick)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);

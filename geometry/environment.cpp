@@ -68,7 +68,9 @@ Environment::Environment(std::vector<Vec2> outer, std::vector<std::vector<Vec2>>
   edge_index_ = GridIndex(edge_boxes, indexed, 2.0);
 
   // The free-space mask: mark cells near each boundary edge (by the edge's box), then test
-  // the centre of every other cell.
+  // the centre of every other cell: of the first of each run along a row, whose cells no edge
+  // meets (the segment between two neighbours' centres lies in the two cells, so no edge
+  // crosses it), the rest taking its answer.
   const Vec2 size = indexed.size();
   const double side = std::max(size.x, size.y) / 256.0;
   free_nx_ = std::max(1, static_cast<std::int32_t>(std::ceil(size.x / side)));
@@ -97,8 +99,10 @@ Environment::Environment(std::vector<Vec2> outer, std::vector<std::vector<Vec2>>
     for (std::int32_t i = 0; i < free_nx_; ++i) {
       const std::size_t k = static_cast<std::size_t>(j) * free_nx_ + i;
       if (near_boundary[k]) continue;
-      free_mask_[k] = contains(free_origin_ +
-                               Vec2{(i + 0.5) * free_cell_size_.x, (j + 0.5) * free_cell_size_.y});
+      free_mask_[k] = i > 0 && !near_boundary[k - 1]
+                          ? free_mask_[k - 1]
+                          : contains(free_origin_ + Vec2{(i + 0.5) * free_cell_size_.x,
+                                                         (j + 0.5) * free_cell_size_.y});
     }
   }
 }

@@ -23,13 +23,13 @@ KnownLattice KnownLattice::of_free_space(const Environment& env, std::uint32_t c
   KnownLattice l(env.bounds(), cells);
   for (std::int32_t j = 0; j < l.ny_; ++j)
     for (std::int32_t i = 0; i < l.nx_; ++i)
-      if (env.locate(l.centre(i, j))) l.set(i, j);
+      if (env.contains(l.centre(i, j))) l.set(i, j);
   return l;
 }
 
-std::uint64_t KnownLattice::fill(const std::vector<Vec2>& polygon,
-                                 std::vector<std::size_t>* fresh) {
-  if (polygon.size() < 3) return 0;
+std::vector<LatticeRun> KnownLattice::runs(const std::vector<Vec2>& polygon) const {
+  std::vector<LatticeRun> out;
+  if (polygon.size() < 3) return out;
   double lo = INFINITY, hi = -INFINITY;
   for (const Vec2& p : polygon) {
     lo = std::min(lo, p.y);
@@ -40,7 +40,6 @@ std::uint64_t KnownLattice::fill(const std::vector<Vec2>& polygon,
       0, static_cast<std::int32_t>(std::floor((lo - origin_.y) / cell_ - 0.5)));
   const auto j1 = std::min<std::int32_t>(
       ny_ - 1, static_cast<std::int32_t>(std::ceil((hi - origin_.y) / cell_ - 0.5)));
-  std::uint64_t added = 0;
   std::vector<double> xs;
   for (std::int32_t j = j0; j <= j1; ++j) {
     const double y = origin_.y + (j + 0.5) * cell_;
@@ -58,13 +57,32 @@ std::uint64_t KnownLattice::fill(const std::vector<Vec2>& polygon,
           0, static_cast<std::int32_t>(std::ceil((xs[k] - origin_.x) / cell_ - 0.5)));
       const auto i1 = std::min<std::int32_t>(
           nx_ - 1, static_cast<std::int32_t>(std::floor((xs[k + 1] - origin_.x) / cell_ - 0.5)));
-      for (std::int32_t i = i0; i <= i1; ++i) {
-        if (!at(i, j)) {
-          set(i, j);
-          ++added;
-          if (fresh != nullptr) fresh->push_back(index(i, j));
-        }
+      if (i0 <= i1) out.push_back({j, i0, i1});
+    }
+  }
+  return out;
+}
+
+std::uint64_t KnownLattice::mark(const std::vector<LatticeRun>& runs,
+                                 std::vector<std::size_t>* fresh) {
+  std::uint64_t added = 0;
+  for (const LatticeRun& r : runs) {
+    // The run's bits, a word at a time.
+    std::size_t k = index(r.i0, r.j);
+    const std::size_t end = index(r.i1, r.j) + 1;
+    while (k < end) {
+      const std::size_t w = k / 64, lo = k % 64;
+      const std::size_t hi = std::min<std::size_t>(64, lo + (end - k));
+      const std::uint64_t mask = (hi == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << hi) - 1) &
+                                 ~((std::uint64_t{1} << lo) - 1);
+      std::uint64_t added_bits = mask & ~bits_[w];
+      bits_[w] |= mask;
+      added += static_cast<std::uint64_t>(std::popcount(added_bits));
+      if (fresh != nullptr) {
+        for (; added_bits != 0; added_bits &= added_bits - 1)
+          fresh->push_back(w * 64 + static_cast<std::size_t>(std::countr_zero(added_bits)));
       }
+      k = w * 64 + hi;
     }
   }
   return added;

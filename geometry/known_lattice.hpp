@@ -12,6 +12,12 @@ namespace covsim {
 
 class Environment;
 
+// Cells (i0..i1, j) of a lattice in a row: how a polygon's cells are kept, to be marked on
+// many lattices of the same box without filling the polygon again.
+struct LatticeRun {
+  std::int32_t j, i0, i1;
+};
+
 class KnownLattice {
  public:
   KnownLattice() = default;
@@ -34,9 +40,16 @@ class KnownLattice {
     const std::size_t k = index(i, j);
     bits_[k / 64] |= std::uint64_t{1} << (k % 64);
   }
-  // Marks every cell whose centre lies in the polygon (even-odd rule); returns how many were
-  // new, and appends their indices (j · nx + i) to `fresh` if given.
-  std::uint64_t fill(const std::vector<Vec2>& polygon, std::vector<std::size_t>* fresh = nullptr);
+  // The cells whose centre lies in the polygon (even-odd rule), as runs along rows.
+  std::vector<LatticeRun> runs(const std::vector<Vec2>& polygon) const;
+  // Marks the runs' cells; returns how many were new, and appends their indices (j · nx + i)
+  // to `fresh` if given.
+  std::uint64_t mark(const std::vector<LatticeRun>& runs,
+                     std::vector<std::size_t>* fresh = nullptr);
+  // Marks every cell whose centre lies in the polygon: mark(runs(polygon)).
+  std::uint64_t fill(const std::vector<Vec2>& polygon, std::vector<std::size_t>* fresh = nullptr) {
+    return mark(runs(polygon), fresh);
+  }
   // Marks what the other lattice (of the same box and cells) marks; returns how many were new.
   std::uint64_t merge(const KnownLattice& other);
   std::uint64_t count() const;

@@ -161,7 +161,7 @@ void CoverageController::loop1(std::uint32_t i) {
   r.virtual_target = guarded(i, "coverage law", config_.law.type, [&] {
     Knowledge known = view_->knowledge(i, told);
     // A robot that maps Ω computes its cell in Ω as it believes it.
-    if (mapping_) known.integrator = mapping_->belief(i).integrator.get();
+    if (mapping_) believe(known, *mapping_->belief(i).integrator);
     const Vec2 t = law_->target(r, known);
     if (!is_finite(t))
       throw std::invalid_argument(fmt::format("a target must be finite, found ({}, {})", t.x, t.y));
@@ -229,6 +229,24 @@ void CoverageController::loop1(std::uint32_t i) {
     }
     r.assigned = r.virtual_target;
   }
+}
+
+void CoverageController::believe(Knowledge& k, const CellIntegrator& integrator) {
+  k.integrator = &integrator;
+  if (k.shared == nullptr || !k.version) return;
+  // Every generator known as it is now: one partition in that belief per change of the
+  // generators or of the belief, shared by the robots that hold it (one shared map: all).
+  BelievedPartition& b = believed_[k.kind == Generators::positions ? 1 : 0];
+  if (!b.partition || b.integrator != &integrator || b.version != *k.version) {
+    const auto split = VoronoiPartition::Coincident::split;
+    if (b.partition && b.integrator == &integrator)
+      b.partition.emplace(integrator, k.points, split, std::move(*b.partition));
+    else
+      b.partition.emplace(integrator, k.points, split);
+    b.integrator = &integrator;
+    b.version = *k.version;
+  }
+  k.believed = &*b.partition;
 }
 
 Vec2 CoverageController::planner_goal(const Robot& r) const {

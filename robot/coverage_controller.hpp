@@ -166,6 +166,9 @@ class CoverageController {
   template <class F>
   auto guarded(std::uint32_t i, std::string_view role, std::string_view name, F&& f);
   void loop1(std::uint32_t i);
+  // What robot i knows, for a robot that maps Ω: its cells in its belief (the integrator),
+  // from a partition shared per belief when it knows every generator as it is now.
+  void believe(Knowledge& k, const CellIntegrator& integrator);
   // The goal loop 1 hands robot r's planner under the projection policy.
   Vec2 planner_goal(const Robot& r) const;
   // How deep a straight motion between p and q, both in Ω, runs outside Ω (0 if it stays in).
@@ -247,7 +250,13 @@ class CoverageController {
   std::unique_ptr<Localization> localization_;     // unset: exact
   std::unique_ptr<Mapping> mapping_;               // unset: Ω known (environment.known full)
   std::uint64_t discoveries_ = 0;
-  SensorSpec sensing_;  // what the planners are told of their sensing and localization
+  struct BelievedPartition {
+    const CellIntegrator* integrator = nullptr;
+    std::uint64_t version = 0;
+    std::optional<VoronoiPartition> partition;
+  };
+  BelievedPartition believed_[2];  // of the virtual generators, of the positions
+  SensorSpec sensing_;             // what the planners are told of their sensing and localization
   double localization_error_sum_ = 0.0, localization_error_max_ = 0.0;
   std::uint64_t localization_steps_ = 0;
   double turn_time_ = 0.0;

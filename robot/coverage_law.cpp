@@ -9,13 +9,14 @@ bool CoverageLaw::at_rest(const Robot&, const Tolerances&) const {
 }
 
 const VoronoiPartition* Knowledge::partition() const {
+  if (integrator != nullptr) return believed;
   return shared != nullptr ? &shared->partition(kind) : nullptr;
 }
 
 CellSummary own_cell_summary(const CellIntegrator& law_integrator, const Knowledge& k,
                              ConvexPolygon* cell) {
   const CellIntegrator& integrator = k.integrator != nullptr ? *k.integrator : law_integrator;
-  if (const VoronoiPartition* p = k.integrator != nullptr ? nullptr : k.partition()) {
+  if (const VoronoiPartition* p = k.partition()) {
     if (cell != nullptr) cell->assign(p->cell(k.self).begin(), p->cell(k.self).end());
     return p->summary(k.self);
   }

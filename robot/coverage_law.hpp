@@ -38,10 +38,13 @@ struct Knowledge {
   std::optional<std::uint64_t> version;
   // Otherwise, where the robot keeps its own cell between loop-1 updates (may be null).
   OwnCellCache* cache = nullptr;
-  // For a robot that maps Ω: its cells are of Ω as it believes it (robot/mapping.hpp),
-  // not of the law's; no shared partition then.
+  // For a robot that maps Ω: its cells are of Ω as it believes it (robot/mapping.hpp), not
+  // of the law's, and the shared partition, if any, is `believed`: of the generators it knows
+  // in that belief (null: none).
   const CellIntegrator* integrator = nullptr;
-  // The shared partition, if there is one (computed on first use).
+  const VoronoiPartition* believed = nullptr;
+  // The shared partition, if there is one (computed on first use): in the robot's belief, for
+  // a robot that maps Ω.
   const VoronoiPartition* partition() const;
 };
 

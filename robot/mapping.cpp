@@ -25,14 +25,10 @@ Mapping::Mapping(const Environment& env, const Density& density, double radius, 
   const std::shared_ptr<const Belief> prior = belief_for(known);
   const std::size_t maps = shared ? 1 : robots;
   for (std::size_t m = 0; m < maps; ++m) {
-    RobotMap map{KnownLattice(env.bounds(), static_cast<std::uint32_t>(config.cells)),
-                 SeenWalls(env),
-                 known,
-                 prior,
-                 {},
-                 {},
-                 0,
-                 0};
+    RobotMap map(SeenWalls(env), known, prior);
+    // One shared map holds every reading: the merged lattice is its lattice.
+    if (maps > 1)
+      map.lattice = KnownLattice(env.bounds(), static_cast<std::uint32_t>(config.cells));
     maps_.push_back(std::move(map));
   }
   if (config.robot_maps && maps > 1)
@@ -42,14 +38,27 @@ Mapping::Mapping(const Environment& env, const Density& density, double radius, 
 Mapping::~Mapping() = default;
 
 const Belief& Mapping::belief(std::uint32_t i) const {
-  return *maps_[map_of(i)].belief;
+  // Built when asked for: the obstacles a robot's first readings close, one after another,
+  // make one belief, not one each.
+  const RobotMap& m = maps_[map_of(i)];
+  if (!m.belief || m.belief_known != m.known) {
+    m.belief = belief_for(m.known);
+    m.belief_known = m.known;
+  }
+  return *m.belief;
 }
 
 const KnownLattice& Mapping::lattice(std::uint32_t i) const {
-  return maps_[map_of(i)].lattice;
+  // One map holds every reading: the merged lattice. Otherwise a robot's lattice is marked
+  // when asked for (the measures at the end), not at each reading it hears.
+  if (maps_.size() == 1) return merged_;
+  const RobotMap& m = maps_[i];
+  for (; m.filled < m.order.size(); ++m.filled)
+    m.lattice.mark(runs_[m.order[m.filled]]);
+  return m.lattice;
 }
 
-std::shared_ptr<const Belief> Mapping::belief_for(const std::vector<bool>& known) {
+std::shared_ptr<const Belief> Mapping::belief_for(const std::vector<bool>& known) const {
   auto it = beliefs_.find(known);
   if (it != beliefs_.end()) return it->second;
   auto b = std::make_shared<Belief>();
@@ -83,8 +92,9 @@ void Mapping::take(std::uint32_t i, Vec2 p, SimTime t) {
   const auto limit = static_cast<std::uint32_t>(config_.max_bytes);
   for (Scan& part : split_scan(env_, take_scan(env_, p, range_), limit)) {
     const auto s = static_cast<std::uint32_t>(scans_.size());
+    runs_.push_back(merged_.runs(part.fan));
     fresh_.clear();
-    merged_.fill(part.fan, &fresh_);
+    merged_.mark(runs_.back(), &fresh_);
     for (const std::size_t k : fresh_)
       merged_time_[k] = t.seconds();
     scans_.push_back(std::move(part));
@@ -100,13 +110,13 @@ void Mapping::add(std::size_t index, std::uint32_t s, SimTime t) {
   m.holds[s] = true;
   m.order.push_back(s);
   const Scan& scan = scans_[s];
-  if (robot_time_.empty()) {
-    m.lattice.fill(scan.fan);
-  } else {
+  if (!robot_time_.empty()) {
+    // Each robot's own map's times: its lattice marked as it comes to hold readings.
     fresh_.clear();
-    m.lattice.fill(scan.fan, &fresh_);
+    m.lattice.mark(runs_[s], &fresh_);
     for (const std::size_t k : fresh_)
       robot_time_[index][k] = t.seconds();
+    m.filled = m.order.size();
   }
   if (!m.walls.add(scan)) return;
   bool changed = false;
@@ -117,7 +127,6 @@ void Mapping::add(std::size_t index, std::uint32_t s, SimTime t) {
     }
   }
   if (!changed) return;
-  m.belief = belief_for(m.known);
   ++belief_changes_;
 }
 
@@ -175,8 +184,8 @@ double Mapping::disagreement() const {
   if (maps_.size() <= 1 || free_count_ == 0) return 0.0;
   const double merged = static_cast<double>(merged_.common(free_cells_));
   double sum = 0.0;
-  for (const RobotMap& m : maps_)
-    sum += merged - static_cast<double>(m.lattice.common(free_cells_));
+  for (std::uint32_t i = 0; i < maps_.size(); ++i)
+    sum += merged - static_cast<double>(lattice(i).common(free_cells_));
   return sum / static_cast<double>(maps_.size()) / static_cast<double>(free_count_);
 }
 

@@ -56,7 +56,7 @@ class Mapping final : public MapExchange {
   const Belief& belief(std::uint32_t i) const;
   // Where robot i, standing at p (in Ω shrunk by the radius), believes its centre may go.
   const Environment& free_space(std::uint32_t i, Vec2 p) const;
-  // Times a robot's belief changed (an obstacle became known), over all maps.
+  // Times an obstacle became known to a map, over all maps.
   std::uint64_t belief_changes() const { return belief_changes_; }
 
   MapPayload pack(std::uint32_t sender) override;
@@ -101,10 +101,14 @@ class Mapping final : public MapExchange {
 
  private:
   struct RobotMap {
-    KnownLattice lattice;
+    RobotMap(SeenWalls w, std::vector<bool> k, std::shared_ptr<const Belief> b)
+        : walls(std::move(w)), known(std::move(k)), belief(std::move(b)) {}
+    mutable KnownLattice lattice;  // order[0, filled) marked on it
+    mutable std::size_t filled = 0;
     SeenWalls walls;
-    std::vector<bool> known;  // per element
-    std::shared_ptr<const Belief> belief;
+    std::vector<bool> known;                       // per element
+    mutable std::shared_ptr<const Belief> belief;  // of belief_known (belief())
+    mutable std::vector<bool> belief_known;
     std::vector<std::uint32_t> order;  // the readings it holds, as it came to hold them
     std::vector<bool> holds;           // per reading
     std::size_t sent = 0;              // order[0, sent) have been broadcast at least once
@@ -114,7 +118,7 @@ class Mapping final : public MapExchange {
   void take(std::uint32_t i, Vec2 p, SimTime t);
   // Adds scan s to map m, updating its belief if an obstacle became known.
   void add(std::size_t m, std::uint32_t s, SimTime t);
-  std::shared_ptr<const Belief> belief_for(const std::vector<bool>& known);
+  std::shared_ptr<const Belief> belief_for(const std::vector<bool>& known) const;
   void note_merged(SimTime t);
 
   const Environment& env_;
@@ -124,9 +128,10 @@ class Mapping final : public MapExchange {
   std::size_t robots_;
   std::vector<MapElement> elements_;
   std::vector<Scan> scans_;
+  std::vector<std::vector<LatticeRun>> runs_;  // each reading's cells
   std::vector<RobotMap> maps_;
   std::vector<double> travelled_;  // per robot, since its last reading
-  std::map<std::vector<bool>, std::shared_ptr<const Belief>> beliefs_;
+  mutable std::map<std::vector<bool>, std::shared_ptr<const Belief>> beliefs_;
   KnownLattice free_cells_, merged_;
   std::vector<double> merged_time_;              // per cell, s
   std::vector<std::vector<double>> robot_time_;  // per robot map and cell, s (robot_maps)

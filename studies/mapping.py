@@ -4,19 +4,24 @@
 office (30 robots) and maze (40 robots) with Ω not known beforehand (`environment.known`:
 "boundary", the outer ring known and the holes found by sensing, or "none", only the
 bounding box known), across the range sensor's range (0.5 m, 2 m, unlimited) and Bernoulli
-loss on every link (p = 0, 0.3, 0.6), each on seeds 1..3. Every run is decentralized: the
-Bernoulli model is set at p = 0 too, which makes each robot keep its own map and share it in
-its broadcasts (the scenario files as they stand have no `network` section and run on the
-ideal network, one shared map). Those shared-map runs are run as well, as a reference
-(loss "shared" in the tables). Each run also runs the scenario with Ω known from the same
-starts and seed (`mapping.compare_known`), which gives `mapping.cost_ratio`.
+loss on every link (p = 0, 0.3, 0.6), each on seeds 1..3, from the scenarios' own starts.
+Every such run is decentralized: the Bernoulli model is set at p = 0 too, which makes each
+robot keep its own map and share it in its broadcasts (the scenario files as they stand have
+no `network` section and run on the ideal network, one shared map). Two references per
+range: those shared-map runs (loss "shared" in the tables), and the same runs with Ω known
+("full"). Each unknown-Ω run also runs the scenario with Ω known from the same starts and
+seed (`mapping.compare_known`), which gives `mapping.cost_ratio`; the study checks that this
+cost is the "full" run's final cost.
 
-Per setting: runs converged; time from which the real cost stays within 1% of its final
+Per setting: distinct runs among the seeds (without loss nothing random is left: the seeds
+give one run); runs converged; time from which the real cost stays within 1% of its final
 value (convergence.time_to_1_percent); the final real cost over the Ω-known run's
 (mapping.cost_ratio); when the robots' maps together first held 90% and 100% of Ω's free
-area; the least fraction one robot's map held at the end; the disagreement between the
-robots' maps at the end; the map bytes broadcast; the planners' discoveries of obstacles not
-yet mapped. Mean ± standard deviation over the seeds.
+area; the least fraction one robot's map held at the end; the obstacles the least-informed
+robot knew whole; the disagreement between the robots' maps at the end; the map bytes
+broadcast; the planners' discoveries of obstacles not yet mapped. Mean ± standard deviation
+over the seeds. Where "boundary" and "none" give the same runs (an outer ring that is its
+bounding box, as on both scenarios) they share one row.
 
 Usage: python3 studies/mapping.py [--covsim PATH] [--jobs N] [--seeds N] [--markdown FILE]
 Runs are cached in out/study-mapping/ (one covsim output folder each, trajectory.csv.gz
@@ -40,6 +45,7 @@ WORK = study.ROOT / "out" / "study-mapping"
 FIGURE = study.DOCS / "studies" / "mapping-sweeps.svg"
 SCENARIOS = ["office", "maze"]
 KNOWN = ["boundary", "none"]
+FULL = "full"  # the reference: Ω known
 RANGES = [0.5, 2, None]  # m; None: unlimited
 LOSSES = [0.0, 0.3, 0.6]  # Bernoulli p, decentralized
 SHARED = "shared"  # the scenario's own ideal network: one map, no messages
@@ -54,16 +60,15 @@ def loss_text(p):
     return p if p == SHARED else f"{p:g}"
 
 
-def settings(references=True):
-    """(scenario, known, range, loss) of every setting, in table order."""
-    losses = LOSSES + ([SHARED] if references else [])
-    return [(s, k, r, p) for s in SCENARIOS for k in KNOWN for r in RANGES for p in losses]
+def settings():
+    """(scenario, known, range, loss) of every setting."""
+    return [(s, k, r, p) for s in SCENARIOS for k in [FULL] + KNOWN for r in RANGES
+            for p in LOSSES + [SHARED]]
 
 
 def name(scenario, known, rng, loss, seed):
     r = "inf" if rng is None else f"{rng:g}"
-    p = loss if loss == SHARED else f"{loss:g}"
-    return f"{scenario}-{known}-r{r}-p{p}-s{seed}"
+    return f"{scenario}-{known}-r{r}-p{loss_text(loss)}-s{seed}"
 
 
 def overrides(known, rng, loss):
@@ -80,35 +85,32 @@ def run(covsim, job):
     scenario, known, rng, loss, seed = job
     folder = WORK / name(*job)
     final = folder / "final.json"
-    if final.exists():
-        return json.loads(final.read_text())
-    partial = folder.with_name(folder.name + ".partial")
-    shutil.rmtree(partial, ignore_errors=True)
-    args = [str(covsim), "run", str(study.ROOT / "scenarios" / f"{scenario}.json"),
-            "--seed", str(seed), "--out", str(partial), "--compress"]
-    for s in overrides(known, rng, loss):
-        args += ["--set", s]
-    print(f"run {folder.name}", file=sys.stderr, flush=True)
-    result = subprocess.run(args, text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    if result.returncode != 0:
-        raise study.StudyError(f"{folder.name}: covsim failed with exit code "
-                               f"{result.returncode}: {result.stderr.strip()[-2000:]}")
-    (partial / "covsim.log").write_text(result.stdout + result.stderr)
-    shutil.rmtree(folder, ignore_errors=True)
-    partial.replace(folder)
+    if not final.exists():
+        partial = folder.with_name(folder.name + ".partial")
+        shutil.rmtree(partial, ignore_errors=True)
+        args = [str(covsim), "run", str(study.ROOT / "scenarios" / f"{scenario}.json"),
+                "--seed", str(seed), "--out", str(partial), "--compress"]
+        for s in overrides(known, rng, loss):
+            args += ["--set", s]
+        print(f"run {folder.name}", file=sys.stderr, flush=True)
+        result = subprocess.run(args, text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        if result.returncode != 0:
+            raise study.StudyError(f"{folder.name}: covsim failed with exit code "
+                                   f"{result.returncode}: {result.stderr.strip()[-2000:]}")
+        (partial / "covsim.log").write_text(result.stdout + result.stderr)
+        shutil.rmtree(folder, ignore_errors=True)
+        partial.replace(folder)
     out = json.loads(final.read_text())
     if out["network"]["decentralized"] != (loss != SHARED):
         raise study.StudyError(f"{folder.name}: network.decentralized is "
                                f"{out['network']['decentralized']}")
+    if out["mapping"]["known"] != known:
+        raise study.StudyError(f"{folder.name}: mapping.known is {out['mapping']['known']}")
     return out
 
 
 # ---------------------------------------------------------------------------------------
 # Cells
-
-
-def values(runs, get):
-    return [get(r) for r in runs]
 
 
 def mean_sd(v, fmt):
@@ -128,39 +130,57 @@ def reached(v, fmt):
     if not got:
         return "never"
     text = mean_sd(got, fmt)
-    return text if len(got) == len(v) else f"{text} ({len(got)}/{len(v)}; never {len(v) - len(got)})"
+    return text if len(got) == len(v) else f"{text} ({len(got)}/{len(v)}, else never)"
 
 
 def fraction_cell(v):
     v = np.asarray(v, dtype=float)
     if np.all(v == 1.0):
         return "1"
-    return f"{v.mean():.3f} (min {v.min():.3f})"
+    if np.all(v == v[0]):
+        return f"{v[0]:.4f}"
+    return f"{v.mean():.4f} (min {v.min():.4f})"
 
 
 COLUMNS = [
     ("known", False), ("range [m]", True), ("loss p", True), ("distinct runs", True),
-    ("converged", True),
-    ("time to 1% [s]", True), ("cost / Ω known", True), ("mapped 90% [s]", True),
-    ("mapped 100% [s]", True), ("least map [fraction]", True), ("obstacles, least map", True),
-    ("disagreement", True), ("map MB sent", True), ("discoveries", True)]
+    ("converged", True), ("time to 1% [s]", True), ("cost / Ω known", True),
+    ("mapped 90% [s]", True), ("mapped 100% [s]", True), ("least map [fraction]", True),
+    ("obstacles, least map", True), ("disagreement", True), ("map MB sent", True),
+    ("discoveries", True)]
 
 
-def row(known, rng, loss, runs):
+def row(label, rng, loss, runs):
     m = [r["mapping"] for r in runs]
-    return [known, range_text(rng), loss_text(loss),
+    known = [x["obstacles_known_min"] for x in m]
+    mapped = runs[0]["mapping"]["known"] != FULL
+    return [label, range_text(rng), loss_text(loss),
             f"{len({r['fingerprint'] for r in runs})}",
             f"{sum(r['converged'] for r in runs)}/{len(runs)}",
-            mean_sd(values(runs, lambda r: r["convergence"]["time_to_1_percent"]), "%.0f"),
-            mean_sd([x["cost_ratio"] for x in m], "%.3f"),
-            reached([x["time_to_90_percent"] for x in m], "%.0f"),
-            reached([x["time_to_100_percent"] for x in m], "%.0f"),
-            fraction_cell([x["known_fraction_min"] for x in m]),
-            f"{min(x['obstacles_known_min'] for x in m)}–{max(x['obstacles_known_min'] for x in m)}"
-            f" of {m[0]['obstacles']}",
-            mean_sd([x["disagreement"] for x in m], "%.3f"),
-            mean_sd([x["bytes"] / 1e6 for x in m], "%.0f"),
-            mean_sd([x["discoveries"] for x in m], "%.1f")]
+            mean_sd([r["convergence"]["time_to_1_percent"] for r in runs], "%.0f"),
+            mean_sd([x["cost_ratio"] for x in m], "%.3f") if mapped else "(1)",
+            reached([x["time_to_90_percent"] for x in m], "%.0f") if mapped else "–",
+            reached([x["time_to_100_percent"] for x in m], "%.0f") if mapped else "–",
+            fraction_cell([x["known_fraction_min"] for x in m]) if mapped else "–",
+            (f"{min(known)}" if min(known) == max(known) else f"{min(known)}–{max(known)}")
+            + f" of {m[0]['obstacles']}" if mapped else "–",
+            mean_sd([x["disagreement"] for x in m], "%.3g") if mapped else "–",
+            mean_sd([x["bytes"] / 1e6 for x in m], "%.0f") if mapped else "–",
+            mean_sd([x["discoveries"] for x in m], "%.1f") if mapped else "–"]
+
+
+def same_runs(results, scenario, seeds):
+    """Whether "boundary" and "none" gave the same run (fingerprint) in every setting."""
+    return all(results[(scenario, "boundary", r, p, s)]["fingerprint"]
+               == results[(scenario, "none", r, p, s)]["fingerprint"]
+               for r in RANGES for p in LOSSES + [SHARED] for s in seeds)
+
+
+def known_groups(results, scenario, seeds):
+    """(label, known value whose runs the rows show) for a scenario's tables and figure."""
+    if same_runs(results, scenario, seeds):
+        return [("boundary = none", "none")]
+    return [(k, k) for k in KNOWN]
 
 
 def tables(results, seeds):
@@ -168,12 +188,30 @@ def tables(results, seeds):
     for scenario in SCENARIOS:
         lines += [f"### {scenario}", ""]
         rows = []
-        for (s, k, r, p) in settings():
-            if s == scenario:
-                rows.append(row(k, r, p, [results[(s, k, r, p, seed)] for seed in seeds]))
+        for label, known in [(FULL + " (Ω known)", FULL)] + known_groups(results, scenario,
+                                                                           seeds):
+            for r in RANGES:
+                for p in LOSSES + [SHARED]:
+                    rows.append(row(label, r, p, [results[(scenario, known, r, p, s)]
+                                                  for s in seeds]))
         lines += study.markdown_table([c for c, _ in COLUMNS], rows, [a for _, a in COLUMNS])
         lines.append("")
     return lines
+
+
+def check_comparison(results, seeds):
+    """mapping.cost_known of every unknown-Ω run against the final cost of the "full" run of
+    the same setting and seed: the largest relative difference."""
+    worst = 0.0
+    for s in SCENARIOS:
+        for k in KNOWN:
+            for r in RANGES:
+                for p in LOSSES + [SHARED]:
+                    for seed in seeds:
+                        known = results[(s, k, r, p, seed)]["mapping"]["cost_known"]
+                        full = results[(s, FULL, r, p, seed)]["cost"]["real"]
+                        worst = max(worst, abs(known - full) / full)
+    return worst
 
 
 # ---------------------------------------------------------------------------------------
@@ -182,10 +220,13 @@ def tables(results, seeds):
 
 def plot(results, seeds, file):
     """Per scenario (columns): time to 1% of the final cost, time to map 90% of Ω, and the
-    cost over the Ω-known run's, against the sensor range; a line per loss, solid for known
-    boundary and dashed for none; points are means over the seeds, a run that never mapped
-    90% left out (an open marker where some were)."""
+    cost over the Ω-known run's, against the sensor range; a colour per loss, solid with Ω
+    unknown and dotted with Ω known (top row); means over the seeds with bars of ± one
+    standard deviation, the losses side by side. A run that never mapped 90% is left out
+    (an open ring where some did not; 'never' where none did)."""
     plt = study.pyplot("covsim-study-mapping")
+    from matplotlib.lines import Line2D
+
     measures = [("time to 1% of the final cost [s]",
                  lambda r: r["convergence"]["time_to_1_percent"]),
                 ("maps together hold 90% of Ω [s]",
@@ -194,26 +235,37 @@ def plot(results, seeds, file):
     fig, axes = plt.subplots(len(measures), len(SCENARIOS), figsize=(9.6, 8.4),
                              constrained_layout=True, sharex=True)
     x = np.arange(len(RANGES))
-    colours = {0.0: "C0", 0.3: "C1", 0.6: "C3", SHARED: "0.4"}
+    losses = LOSSES + [SHARED]
+    colours = {0.0: "C0", 0.3: "C1", 0.6: "C3", SHARED: "0.35"}
+    shift = {p: 0.06 * (i - (len(losses) - 1) / 2) for i, p in enumerate(losses)}
     for col, scenario in enumerate(SCENARIOS):
+        groups = known_groups(results, scenario, seeds)
         for row_, (label, get) in enumerate(measures):
             ax = axes[row_][col]
-            for known, style in [("boundary", "-"), ("none", "--")]:
-                for loss in LOSSES + [SHARED]:
-                    ys, partial = [], []
-                    for rng in RANGES:
-                        v = [get(results[(scenario, known, rng, loss, s)]) for s in seeds]
-                        got = [y for y in v if y is not None]
-                        ys.append(np.mean(got) if got else math.nan)
-                        partial.append(0 < len(got) < len(v))
-                    ys = np.asarray(ys)
-                    ax.plot(x, ys, color=colours[loss], linestyle=style, marker="o",
-                            markersize=4, linewidth=1.2 if loss != SHARED else 0.8,
-                            label=f"{known}, p={loss_text(loss)}")
-                    for xi, yi, p in zip(x, ys, partial):
-                        if p:
-                            ax.plot([xi], [yi], marker="o", markersize=8, color=colours[loss],
-                                    fillstyle="none", linestyle="none")
+            lines = [(k, p, ["-", "--"][i], "o") for i, (_g, k) in enumerate(groups)
+                     for p in losses]
+            if row_ == 0:
+                lines += [(FULL, p, ":", "s") for p in losses]
+            for known, loss, style, marker in lines:
+                mid, sd, partial, never = [], [], [], []
+                for rng in RANGES:
+                    v = [get(results[(scenario, known, rng, loss, s)]) for s in seeds]
+                    got = np.asarray([y for y in v if y is not None], dtype=float)
+                    mid.append(got.mean() if len(got) else math.nan)
+                    sd.append(got.std(ddof=1) if len(got) > 1 else 0.0)
+                    partial.append(0 < len(got) < len(v))
+                    never.append(len(got) == 0)
+                xs = x + shift[loss]
+                ax.errorbar(xs, mid, yerr=sd, color=colours[loss], linestyle=style,
+                            marker=marker, markersize=3.5, linewidth=1.1, elinewidth=0.7,
+                            capsize=1.5)
+                for xi, yi, p in zip(xs, mid, partial):
+                    if p:
+                        ax.plot([xi], [yi], marker="o", markersize=8, color=colours[loss],
+                                fillstyle="none", linestyle="none")
+                if row_ == 1 and all(never[:1]) and loss == losses[0]:
+                    ax.annotate("never\n(every run)", (x[0], 0.5), xycoords=("data", "axes fraction"),
+                                ha="center", va="center", fontsize=8, color="0.3")
             if row_ == 2:
                 ax.axhline(1.0, color="k", linewidth=0.6)
             ax.set_xticks(x, [range_text(r) for r in RANGES])
@@ -223,10 +275,18 @@ def plot(results, seeds, file):
             if col == 0:
                 ax.set_ylabel(label)
             if row_ == 0:
-                ax.set_title(scenario, fontsize=10)
-    axes[0][1].legend(fontsize=7, ncol=2)
-    fig.suptitle(f"Unknown Ω: solid known boundary, dashed none; loss p per colour (shared: "
-                 f"one map); means over {len(seeds)} seeds", fontsize=9)
+                ax.set_title(f"{scenario}: 1 run per point without loss, 3 with", fontsize=9)
+    handles = [Line2D([], [], color=colours[p], marker="o", markersize=3.5,
+                      label=f"p = {loss_text(p)}" if p != SHARED else "shared map (ideal network)")
+               for p in losses]
+    unknown = " = ".join(g for g, _k in known_groups(results, SCENARIOS[0], seeds))
+    handles += [Line2D([], [], color="k", linestyle="-", marker="o", markersize=3.5,
+                       label=f"Ω unknown ({unknown})"),
+                Line2D([], [], color="k", linestyle=":", marker="s", markersize=3.5,
+                       label="Ω known")]
+    axes[0][-1].legend(handles=handles, loc="lower left", ncol=2, fontsize=6.5)
+    fig.suptitle(f"Mapping while covering: means ± sd over {len(seeds)} seeds (without loss "
+                 f"the seeds give one run)", fontsize=9)
     study.save_svg(fig, file)
 
 
@@ -249,9 +309,16 @@ def main():
     WORK.mkdir(parents=True, exist_ok=True)
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:
         results = dict(zip(jobs, pool.map(lambda j: run(covsim, j), jobs)))
-    lines = [f"{len(seeds)} seeds per setting, {len(jobs)} runs (each with its Ω-known "
-             f"comparison run). Mean ± sd over the seeds; a time that never came is "
-             f"'never' (with how many runs reached it where some did).", ""]
+    worst = check_comparison(results, seeds)
+    if worst > 1e-9:
+        raise study.StudyError(f"mapping.cost_known differs from the Ω-known run's final cost "
+                               f"by up to {100 * worst:.3g}%")
+    mapped = len([j for j in jobs if j[1] != FULL])
+    lines = [f"{len(seeds)} seeds per setting, {len(jobs)} runs ({mapped} with Ω unknown, "
+             f"each also run with Ω known for mapping.cost_ratio: its cost_known equals the "
+             f"\"full\" run's final cost in every case). Mean ± sd over the seeds; a time "
+             f"that never came is 'never'. Disagreement, least map and obstacles: at the end "
+             f"of the run.", ""]
     lines += tables(results, seeds)
     plot(results, seeds, FIGURE)
     lines += ["![Unknown environments: time to 1% of the final cost, time to map 90% of Ω "
