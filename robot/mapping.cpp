@@ -147,6 +147,7 @@ MapPayload Mapping::pack(std::uint32_t sender) {
     bytes += scans_[m.order[m.sent]].bytes();
     ++m.sent;
   }
+  new_bytes_sent_ += bytes;
   // Room left: older ones again, in turn (a receiver may have lost them).
   const std::size_t older = m.sent - ids->size();
   for (std::size_t k = 0; k < older; ++k) {

@@ -93,6 +93,9 @@ class Mapping final : public MapExchange {
   double disagreement() const;
   // Map bytes broadcast (each broadcast counted once, whatever its receivers).
   std::uint64_t bytes_sent() const { return bytes_sent_; }
+  // Of those, the bytes of readings a robot sent for the first time (the rest repeat older
+  // ones in spare room).
+  std::uint64_t new_bytes_sent() const { return new_bytes_sent_; }
   // Obstacles (holes, and pockets of the outer ring with "none") and how many of them the
   // least-informed robot knows.
   std::size_t elements() const { return elements_.size(); }
@@ -138,7 +141,7 @@ class Mapping final : public MapExchange {
   std::vector<std::size_t> fresh_;
   std::uint64_t free_count_ = 0;
   std::optional<SimTime> time_90_, time_100_;
-  std::uint64_t bytes_sent_ = 0, belief_changes_ = 0;
+  std::uint64_t bytes_sent_ = 0, new_bytes_sent_ = 0, belief_changes_ = 0;
   std::function<SimTime()> now_;
 };
 

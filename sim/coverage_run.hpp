@@ -84,7 +84,8 @@ struct CoverageOutcome {
   double known_fraction = 1.0, known_fraction_min = 1.0;
   double mapping_time_90 = 0.0, mapping_time_100 = 0.0;
   double map_disagreement = 0.0;
-  std::uint64_t map_bytes = 0, scans = 0, obstacles = 0, obstacles_known_min = 0, discoveries = 0;
+  std::uint64_t map_bytes = 0, map_bytes_new = 0, scans = 0, obstacles = 0, obstacles_known_min = 0,
+                discoveries = 0;
   double cost_known = NAN;
   double cost_ratio() const { return cost_real / cost_known; }
   // Wall-clock seconds spent in planner steps, and how many steps: the only measures besides

@@ -13,6 +13,8 @@ struct MetricsSample {
   double path_length = 0.0;
   NetworkTotals messages;
   NetworkSample network;
+  // Robots that map Ω (robot/mapping.hpp): the maps' known fractions and disagreement.
+  double known_fraction = 1.0, known_fraction_min = 1.0, map_disagreement = 0.0;
 };
 
 }  // namespace covsim

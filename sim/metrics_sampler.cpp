@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "robot/mapping.hpp"
+
 namespace covsim {
 
 void MetricsSampler::on_sample(SimTime t, const CoverageController& controller) {
@@ -21,6 +23,12 @@ void MetricsSampler::on_sample(SimTime t, const CoverageController& controller) 
   }
   s.messages = controller.network_totals();
   s.network = network_->sample(controller);
+  if (const Mapping* m = controller.mapping()) {
+    s.known_fraction = m->known_fraction();
+    for (std::uint32_t i = 0; i < controller.robots().size(); ++i)
+      s.known_fraction_min = std::min(s.known_fraction_min, m->known_fraction(i));
+    s.map_disagreement = m->disagreement();
+  }
   samples_.push_back(s);
 }
 

@@ -200,6 +200,7 @@ CoverageOutcome Simulation::outcome() const {
     out.mapping_time_100 = m->time_to_100() ? m->time_to_100()->seconds() : NAN;
     out.map_disagreement = m->disagreement();
     out.map_bytes = m->bytes_sent();
+    out.map_bytes_new = m->new_bytes_sent();
     out.scans = m->scans().size();
     out.obstacles_known_min = m->elements_known_min();
     out.obstacles = m->elements();

@@ -412,6 +412,11 @@ const std::vector<Measure>& measures() {
           .in_runs(44, "map_bytes")
           .in_summary()
           .later(),
+      member("mapping.bytes_new", K::integer, "bytes",
+             "of those, readings a robot sent for the first time (the rest repeat older ones in "
+             "the spare room of a broadcast)",
+             &O::map_bytes_new)
+          .later(),
       member("mapping.scans", K::integer, "", "range readings kept for the maps", &O::scans)
           .later(),
       member("mapping.obstacles", K::integer, "",

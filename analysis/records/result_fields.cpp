@@ -128,6 +128,15 @@ const FieldTable<MetricsSample>& metrics_fields() {
       get("algebraic_connectivity", K::number, "",
           "second-smallest eigenvalue of the graph Laplacian",
           [](const S& s) { return number_or_null(s.network.graph.algebraic_connectivity); }),
+      // Read back by nothing (the figures need the costs only): no setter, as above.
+      get("known_fraction", K::number, "",
+          "fraction of Ω's free area the robots' maps together hold (1: Ω known)",
+          [](const S& s) { return json(s.known_fraction); }),
+      get("known_fraction_min", K::number, "", "the least fraction one robot's own map holds",
+          [](const S& s) { return json(s.known_fraction_min); }),
+      get("map_disagreement", K::number, "",
+          "mean over the robots of the fraction some robot's map holds and its own not",
+          [](const S& s) { return json(s.map_disagreement); }),
   };
   return t;
 }

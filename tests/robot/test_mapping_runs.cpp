@@ -4,11 +4,13 @@
 // converge near the cost of the run with Ω known.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "robot/coverage_controller.hpp"
 #include "robot/mapping.hpp"
 #include "scenarios/scenario_error.hpp"
+#include "sim/metrics_sampler.hpp"
 #include "sim/simulation.hpp"
 #include "tests/robot/paper_scenarios.hpp"
 
@@ -190,4 +192,28 @@ TEST_CASE("what robots that do not know Ω cannot be told is refused", "[mapping
   bad["environment"]["known"] = "partly";
   CHECK_THROWS_WITH(covsim::test::parse_beside_paper(bad, "u_shape.json"),
                     Contains("$.environment.known") && Contains("boundary"));
+}
+
+TEST_CASE("metrics.csv follows the maps as they grow", "[mapping][metrics]") {
+  const nlohmann::json network{{"loss", {{"model", "bernoulli"}, {"p", 0.3}}}};
+  Simulation sim(unknown("two_obstacles.json", "none", 0.3, {{"network", network}}));
+  MetricsSampler sampler;
+  sim.add_observer(&sampler);
+  const CoverageOutcome out = sim.run();
+  const auto& samples = sampler.samples();
+  REQUIRE(samples.size() > 10);
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    CHECK(samples[k].known_fraction_min <= samples[k].known_fraction);
+    CHECK(samples[k].map_disagreement >= 0.0);
+    if (k > 0) CHECK(samples[k].known_fraction >= samples[k - 1].known_fraction);
+  }
+  CHECK(samples.front().known_fraction < samples.back().known_fraction);
+  CHECK(samples.back().known_fraction == out.known_fraction);
+  CHECK(samples.back().known_fraction_min == out.known_fraction_min);
+  CHECK(samples.back().map_disagreement == out.map_disagreement);
+  // Some time a robot's map lagged behind the others'.
+  CHECK(std::any_of(samples.begin(), samples.end(),
+                    [](const MetricsSample& s) { return s.map_disagreement > 0.0; }));
+  CHECK(out.map_bytes_new <= out.map_bytes);
+  CHECK(out.map_bytes_new > 0);
 }

@@ -92,6 +92,7 @@ RunMeasures known_run() {
   o.mapping_time_100 = NAN;
   o.map_disagreement = 0.0625;
   o.map_bytes = 4096;
+  o.map_bytes_new = 1024;
   o.scans = 55;
   o.obstacles = 3;
   o.obstacles_known_min = 2;
@@ -134,7 +135,7 @@ const ojson kKnownFinal = ojson::parse(R"({
   "localization": {"error_mean": 0.003, "error_max": 0.0125, "fixes": 640},
   "mapping": {"known": "none", "known_fraction": 0.875, "known_fraction_min": 0.75,
               "time_to_90_percent": 10.5, "time_to_100_percent": null,
-              "disagreement": 0.0625, "bytes": 4096, "scans": 55, "obstacles": 3,
+              "disagreement": 0.0625, "bytes": 4096, "bytes_new": 1024, "scans": 55, "obstacles": 3,
               "obstacles_known_min": 2, "discoveries": 5, "cost_known": 0.096,
               "cost_ratio": 1.25},
   "planner": {"steps": 200, "step_time_us": 2.5},
