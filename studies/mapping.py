@@ -45,6 +45,9 @@ WORK = study.ROOT / "out" / "study-mapping"
 FIGURE = study.DOCS / "studies" / "mapping-sweeps.svg"
 SCENARIOS = ["office", "maze"]
 KNOWN = ["boundary", "none"]
+# "boundary" runs once per range (seed 1, the shared map): on a scenario whose outer ring is
+# its bounding box it is the "none" run, fingerprint for fingerprint.
+BOUNDARY_LOSSES = ["shared"]
 FULL = "full"  # the reference: Ω known
 RANGES = [0.5, 2, None]  # m; None: unlimited
 LOSSES = [0.0, 0.3, 0.6]  # Bernoulli p, decentralized
@@ -60,10 +63,15 @@ def loss_text(p):
     return p if p == SHARED else f"{p:g}"
 
 
-def settings():
-    """(scenario, known, range, loss) of every setting."""
-    return [(s, k, r, p) for s in SCENARIOS for k in [FULL] + KNOWN for r in RANGES
-            for p in LOSSES + [SHARED]]
+def jobs_of(seeds):
+    """(scenario, known, range, loss, seed) of every run."""
+    out = []
+    for s in SCENARIOS:
+        for r in RANGES:
+            for p in LOSSES + [SHARED]:
+                out += [(s, k, r, p, seed) for k in [FULL, "none"] for seed in seeds]
+            out += [(s, "boundary", r, p, seeds[0]) for p in BOUNDARY_LOSSES]
+    return out
 
 
 def name(scenario, known, rng, loss, seed):
@@ -72,8 +80,11 @@ def name(scenario, known, rng, loss, seed):
 
 
 def overrides(known, rng, loss):
+    # The ratio to the Ω-known run comes from the study's own "full" runs.
     sets = [f"environment.known={known}",
             f"sensor.range={'null' if rng is None else f'{rng:g}'}"]
+    if known != FULL:
+        sets += ["mapping.compare_known=false"]
     if loss != SHARED:
         sets += ["network.loss.model=bernoulli", f"network.loss.p={loss:g}"]
     return sets
@@ -101,12 +112,31 @@ def run(covsim, job):
         shutil.rmtree(folder, ignore_errors=True)
         partial.replace(folder)
     out = json.loads(final.read_text())
+    # The largest disagreement between the maps over the run (metrics.csv).
+    out["disagreement_max"] = max_column(folder / "metrics.csv", "map_disagreement")
     if out["network"]["decentralized"] != (loss != SHARED):
         raise study.StudyError(f"{folder.name}: network.decentralized is "
                                f"{out['network']['decentralized']}")
     if out["mapping"]["known"] != known:
         raise study.StudyError(f"{folder.name}: mapping.known is {out['mapping']['known']}")
     return out
+
+
+def max_column(path, column):
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+        k = header.index(column)
+        return max(float(line.split(",")[k]) for line in f if line.strip())
+
+
+def with_ratios(results):
+    """mapping.cost_ratio of each unknown-Ω run: its final cost over the "full" run's of the
+    same setting and seed."""
+    for (s, k, r, p, seed), out in results.items():
+        if k != FULL:
+            full = results[(s, FULL, r, p, seed)]["cost"]["real"]
+            out["mapping"]["cost_known"] = full
+            out["mapping"]["cost_ratio"] = out["cost"]["real"] / full
 
 
 # ---------------------------------------------------------------------------------------
@@ -146,8 +176,8 @@ COLUMNS = [
     ("known", False), ("range [m]", True), ("loss p", True), ("distinct runs", True),
     ("converged", True), ("time to 1% [s]", True), ("cost / Ω known", True),
     ("mapped 90% [s]", True), ("mapped 100% [s]", True), ("least map [fraction]", True),
-    ("obstacles, least map", True), ("disagreement", True), ("map MB sent", True),
-    ("discoveries", True)]
+    ("obstacles, least map", True), ("largest disagreement", True),
+    ("map MB sent (new)", True), ("discoveries", True)]
 
 
 def row(label, rng, loss, runs):
@@ -164,23 +194,25 @@ def row(label, rng, loss, runs):
             fraction_cell([x["known_fraction_min"] for x in m]) if mapped else "–",
             (f"{min(known)}" if min(known) == max(known) else f"{min(known)}–{max(known)}")
             + f" of {m[0]['obstacles']}" if mapped else "–",
-            mean_sd([x["disagreement"] for x in m], "%.3g") if mapped else "–",
-            mean_sd([x["bytes"] / 1e6 for x in m], "%.0f") if mapped else "–",
+            mean_sd([r["disagreement_max"] for r in runs], "%.3g") if mapped else "–",
+            (mean_sd([x["bytes"] / 1e6 for x in m], "%.0f") + " ("
+             + mean_sd([x["bytes_new"] / 1e6 for x in m], "%.1f") + ")") if mapped else "–",
             mean_sd([x["discoveries"] for x in m], "%.1f") if mapped else "–"]
 
 
 def same_runs(results, scenario, seeds):
-    """Whether "boundary" and "none" gave the same run (fingerprint) in every setting."""
-    return all(results[(scenario, "boundary", r, p, s)]["fingerprint"]
-               == results[(scenario, "none", r, p, s)]["fingerprint"]
-               for r in RANGES for p in LOSSES + [SHARED] for s in seeds)
+    """Whether "boundary" and "none" gave the same run (fingerprint) wherever both ran."""
+    return all(results[(scenario, "boundary", r, p, seeds[0])]["fingerprint"]
+               == results[(scenario, "none", r, p, seeds[0])]["fingerprint"]
+               for r in RANGES for p in BOUNDARY_LOSSES)
 
 
 def known_groups(results, scenario, seeds):
     """(label, known value whose runs the rows show) for a scenario's tables and figure."""
-    if same_runs(results, scenario, seeds):
-        return [("boundary = none", "none")]
-    return [(k, k) for k in KNOWN]
+    if not same_runs(results, scenario, seeds):
+        raise study.StudyError(f"{scenario}: \"boundary\" and \"none\" differ; the study runs "
+                               f"\"boundary\" once per range only")
+    return [("boundary = none", "none")]
 
 
 def tables(results, seeds):
@@ -199,19 +231,53 @@ def tables(results, seeds):
     return lines
 
 
-def check_comparison(results, seeds):
-    """mapping.cost_known of every unknown-Ω run against the final cost of the "full" run of
-    the same setting and seed: the largest relative difference."""
-    worst = 0.0
-    for s in SCENARIOS:
-        for k in KNOWN:
-            for r in RANGES:
-                for p in LOSSES + [SHARED]:
-                    for seed in seeds:
-                        known = results[(s, k, r, p, seed)]["mapping"]["cost_known"]
-                        full = results[(s, FULL, r, p, seed)]["cost"]["real"]
-                        worst = max(worst, abs(known - full) / full)
-    return worst
+# ---------------------------------------------------------------------------------------
+# The paper's scenarios: obstacles as large as the cells, notches of the outer ring
+
+
+PAPER = ["u_shape", "l_shape", "two_obstacles", "fig2b", "fig2c", "fig2d", "dead_ends"]
+PAPER_RANGES = [0.0, 0.1, 0.5, None]
+
+
+def paper_jobs():
+    return [(s, r) for s in PAPER for r in PAPER_RANGES]
+
+
+def run_paper(covsim, job):
+    """One run of a paper scenario with only the bounding box known (the ideal network, its
+    own seed), compared by covsim with the Ω-known run (mapping.compare_known)."""
+    scenario, rng = job
+    folder = WORK / f"paper-{scenario}-r{'inf' if rng is None else f'{rng:g}'}"
+    final = folder / "final.json"
+    if not final.exists():
+        partial = folder.with_name(folder.name + ".partial")
+        shutil.rmtree(partial, ignore_errors=True)
+        args = [str(covsim), "run", str(study.ROOT / "scenarios" / f"{scenario}.json"),
+                "--out", str(partial), "--set", "environment.known=none",
+                "--set", f"sensor.range={'null' if rng is None else f'{rng:g}'}"]
+        print(f"run {folder.name}", file=sys.stderr, flush=True)
+        result = subprocess.run(args, text=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        if result.returncode != 0:
+            raise study.StudyError(f"{folder.name}: covsim failed with exit code "
+                                   f"{result.returncode}: {result.stderr.strip()[-2000:]}")
+        shutil.rmtree(folder, ignore_errors=True)
+        partial.replace(folder)
+    return json.loads(final.read_text())
+
+
+def paper_table(results):
+    lines = ["### The paper's scenarios, only the bounding box known", ""]
+    rows = []
+    for (scenario, rng), out in results.items():
+        m = out["mapping"]
+        rows.append([scenario, range_text(rng), out["stop_reason"], f"{out['sim_time']:.1f}",
+                     f"{m['cost_ratio']:.4f}", f"{m['known_fraction']:.3f}",
+                     f"{m['obstacles_known_min']} of {m['obstacles']}", f"{m['discoveries']}"])
+    lines += study.markdown_table(
+        ["scenario", "range [m]", "stop", "time [s]", "cost / Ω known", "mapped [fraction]",
+         "obstacles known", "discoveries"], rows,
+        [False, True, False, True, True, True, True, True])
+    return lines + [""]
 
 
 # ---------------------------------------------------------------------------------------
@@ -305,21 +371,20 @@ def main():
     if not os.access(covsim, os.X_OK):
         raise study.StudyError(f"--covsim: {covsim} is not an executable")
     seeds = list(range(1, args.seeds + 1))
-    jobs = [(*setting, seed) for setting in settings() for seed in seeds]
+    jobs = jobs_of(seeds)
+    paper = paper_jobs()
     WORK.mkdir(parents=True, exist_ok=True)
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:
         results = dict(zip(jobs, pool.map(lambda j: run(covsim, j), jobs)))
-    worst = check_comparison(results, seeds)
-    if worst > 1e-9:
-        raise study.StudyError(f"mapping.cost_known differs from the Ω-known run's final cost "
-                               f"by up to {100 * worst:.3g}%")
+        paper_results = dict(zip(paper, pool.map(lambda j: run_paper(covsim, j), paper)))
+    with_ratios(results)
     mapped = len([j for j in jobs if j[1] != FULL])
-    lines = [f"{len(seeds)} seeds per setting, {len(jobs)} runs ({mapped} with Ω unknown, "
-             f"each also run with Ω known for mapping.cost_ratio: its cost_known equals the "
-             f"\"full\" run's final cost in every case). Mean ± sd over the seeds; a time "
-             f"that never came is 'never'. Disagreement, least map and obstacles: at the end "
-             f"of the run.", ""]
+    lines = [f"{len(seeds)} seeds per setting, {len(jobs)} runs ({mapped} with Ω unknown). "
+             f"Mean ± sd over the seeds; a time that never came is 'never'. Least map and "
+             f"obstacles: at the end of the run; disagreement: the largest over the run's "
+             f"metrics samples.", ""]
     lines += tables(results, seeds)
+    lines += paper_table(paper_results)
     plot(results, seeds, FIGURE)
     lines += ["![Unknown environments: time to 1% of the final cost, time to map 90% of Ω "
               "and the cost over Ω known, against the sensor range](studies/mapping-sweeps.svg)",
