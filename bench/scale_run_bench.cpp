@@ -100,7 +100,7 @@ void BM_ScaleRunTracking(benchmark::State& state) {
 
 // Robots that know only Ω's bounding box (environment.known none) and map it with a 1 m range:
 // the readings, their fans on the lattice, the beliefs built as obstacles become known, and
-// each robot's cell computed in its belief (no shared partition). Decentralized, the same
+// each robot's cell computed in its belief (a partition per belief). Decentralized, the same
 // with the maps' readings in the broadcasts, beside BM_ScaleRunDecentralized.
 nlohmann::ordered_json mapping(std::size_t n) {
   nlohmann::ordered_json json = scale_json(n);

@@ -26,6 +26,7 @@ double turn_between(Vec2 o, Vec2 a, Vec2 b) {
 // The fan's vertices for the directions from b's to a's (counter-clockwise) where no piece
 // lies: free to the range (chords of its circle) when the reading saw no wall there, else
 // nothing beyond the origin (the robot stands on the boundary and looks into the wall).
+// b and a are the pieces' ends, or, for an end at the origin, a point along its piece.
 void fill_gap(const Environment& env, Vec2 o, double range, Vec2 b, Vec2 a, double gap,
               std::vector<Vec2>& fan) {
   const double from = angle_of(o, b);
@@ -70,8 +71,15 @@ std::vector<Vec2> fan_of(const Environment& env, Vec2 o, double range,
   for (std::size_t k = first; k < last; ++k) {
     fan.push_back(pieces[k].a);
     fan.push_back(pieces[k].b);
-    const Vec2 b = pieces[k].b, a = pieces[(k + 1) % pieces.size()].a;
-    if (b == a) continue;
+    const VisiblePiece& next = pieces[(k + 1) % pieces.size()];
+    // An end at the origin (the robot stands on a wall, or at a corner: within the
+    // tolerance, as the visibility looks from there) has no direction of its own: its piece's
+    // other end gives it.
+    const double tol = env.tolerance();
+    const bool b_here = within(pieces[k].b, o, tol), a_here = within(next.a, o, tol);
+    if (within(pieces[k].b, next.a, tol) || (b_here && a_here)) continue;
+    const Vec2 b = b_here ? pieces[k].a : pieces[k].b, a = a_here ? next.b : next.a;
+    if (within(b, o, tol) || within(a, o, tol)) continue;  // a piece seen as a point
     const double gap = turn_between(o, b, a);
     if (gap < kSameRay || gap > kTurn - kSameRay) continue;
     fill_gap(env, o, range, b, a, gap, fan);
@@ -96,7 +104,7 @@ std::vector<Scan> split_scan(const Environment& env, Scan scan, std::uint32_t ma
     out.push_back(std::move(scan));
     return out;
   }
-  const std::size_t per = std::max<std::size_t>(1, (max_bytes - 8) / (8 + 8 + 4));
+  const std::size_t per = std::max<std::size_t>(1, (max_bytes - 8 - 2) / (8 + 8 + 4));
   for (std::size_t first = 0; first < scan.pieces.size(); first += per) {
     Scan part;
     part.origin = scan.origin;

@@ -16,11 +16,11 @@ struct Scan {
   // visible pieces, closed in directions where no wall lies within range by chords of the
   // range circle (inscribed, so it stays inside what was seen). Empty for range 0.
   std::vector<Vec2> fan;
-  // Its size in a message: the origin (two float32, 8 bytes), the range's use known to
-  // every robot, and each piece's two end points (8 bytes each) with its edge's ring and
-  // index as the receiver recognises it (4 bytes): what the fan is rebuilt from.
+  // Its size in a message: the origin (two float32, 8 bytes), the number of pieces (2
+  // bytes), and each piece's two end points (8 bytes each) with the wall it lies on (4
+  // bytes); the range is every robot's.
   std::uint32_t bytes() const {
-    return 8 + static_cast<std::uint32_t>(pieces.size()) * (8 + 8 + 4);
+    return 8 + 2 + static_cast<std::uint32_t>(pieces.size()) * (8 + 8 + 4);
   }
 };
 

@@ -128,7 +128,7 @@ ConfigKeys<CoverageConfig> mapping_keys() {
               &CoverageConfig::mapping, &MappingConfig::spacing),
           member_key<CoverageConfig>(
               ParamSpec::number("max_bytes", "bytes",
-                                "map bytes a broadcast carries at most: its newest readings "
+                                "map bytes a broadcast carries at most: readings not yet sent "
                                 "first, then older ones again in turn (decentralized runs)")
                   .at_least(64)
                   .at_most(65536)

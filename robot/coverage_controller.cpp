@@ -239,10 +239,15 @@ void CoverageController::believe(Knowledge& k, const CellIntegrator& integrator)
   BelievedPartition& b = believed_[k.kind == Generators::positions ? 1 : 0];
   if (!b.partition || b.integrator != &integrator || b.version != *k.version) {
     const auto split = VoronoiPartition::Coincident::split;
-    if (b.partition && b.integrator == &integrator)
-      b.partition.emplace(integrator, k.points, split, std::move(*b.partition));
-    else
+    // The next partition keeps the cells of the last that did not change: built beside it,
+    // then put in its place.
+    if (b.partition && b.integrator == &integrator) {
+      VoronoiPartition next(integrator, k.points, split, std::move(*b.partition));
+      b.partition.reset();
+      b.partition.emplace(std::move(next));
+    } else {
       b.partition.emplace(integrator, k.points, split);
+    }
     b.integrator = &integrator;
     b.version = *k.version;
   }

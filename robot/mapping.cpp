@@ -70,7 +70,18 @@ std::shared_ptr<const Belief> Mapping::belief_for(const std::vector<bool>& known
 
 const Environment& Mapping::free_space(std::uint32_t i, Vec2 p) const {
   const ConfigurationSpace& space = *belief(i).space;
-  return space.part(space.part_of(p).value_or(0));
+  if (const auto k = space.part_of(p)) return space.part(*k);
+  // Ω̂ ⊖ r holds Ω ⊖ r, so p lies in a part but for rounding: the nearest.
+  std::size_t best = 0;
+  double least = INFINITY;
+  for (std::size_t k = 0; k < space.part_count(); ++k) {
+    const double d = distance(p, space.part(k).closest_point(p));
+    if (d < least) {
+      least = d;
+      best = k;
+    }
+  }
+  return space.part(best);
 }
 
 void Mapping::start(std::uint32_t i, Vec2 p, SimTime t) {
@@ -141,7 +152,7 @@ MapPayload Mapping::pack(std::uint32_t sender) {
   auto ids = std::make_shared<std::vector<std::uint32_t>>();
   std::uint64_t bytes = 0;
   const auto fits = [&](std::uint32_t s) { return bytes + scans_[s].bytes() <= config_.max_bytes; };
-  // The newest first, in the order it came to hold them.
+  // Those not yet sent first, in the order it came to hold them.
   while (m.sent < m.order.size() && fits(m.order[m.sent])) {
     ids->push_back(m.order[m.sent]);
     bytes += scans_[m.order[m.sent]].bytes();

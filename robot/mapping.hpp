@@ -11,10 +11,10 @@
 // measures and figures.
 //
 // Centralized (the ideal network), the robots share one map. Decentralized, each robot has
-// its own; every broadcast carries readings it holds (its newest first, then older ones in
-// turn, so that maps complete under loss) up to mapping.max_bytes, and a robot merges those it
-// hears. Readings are kept run-wide once; a message carries their numbers and is counted at
-// the size a robot would send them (Scan::bytes()).
+// its own; every broadcast carries readings it holds (those not yet sent first, in the order
+// it came to hold them, then older ones in turn, so that maps complete under loss) up to
+// mapping.max_bytes, and a robot merges those it hears. Readings are kept run-wide once; a message
+// carries their numbers and is counted at the size a robot would send them (Scan::bytes()).
 #include <cstdint>
 #include <functional>
 #include <map>

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/random_stream.hpp"
 #include "geometry/known_lattice.hpp"
 #include "geometry/map_elements.hpp"
 #include "geometry/scan.hpp"
@@ -166,4 +167,97 @@ TEST_CASE("an obstacle is known once every wall of it has been seen", "[geometry
     parts.add(take_scan(env, {x, 0.3}, 0.6));
   }
   CHECK(parts.seen(bottom));
+}
+
+TEST_CASE("a reading from a wall's corner marks the side it sees, to the last rounding",
+          "[geometry][mapping]") {
+  // A maze wall whose corner (0.4, 4) the visibility's clipping does not reproduce exactly
+  // (0.4 + 1.0 · (16.5 − 0.4) rounds to 0.3999999999999986 on the way back).
+  const Environment env(square(0, 0, 20, 20), {square(0.4, 4, 16.5, 4.2)});
+  for (const Vec2 o : {Vec2{0.4, 4}, Vec2{0.4, 4 - 1e-12}, Vec2{16.5, 4.2}, Vec2{3.0, 4.0},
+                       Vec2{0.4 - 1e-13, 4.1}}) {
+    for (const double range : {1.0, 2.5, double{INFINITY}}) {
+      INFO("from (" << o.x << ", " << o.y << "), range " << range);
+      const Scan s = take_scan(env, o, range);
+      KnownLattice l(Box{o - Vec2{2, 2}, o + Vec2{2, 2}}, 400);  // 1 cm cells round it
+      l.fill(s.fan);
+      const double sure = std::isinf(range) ? range : range * std::cos(std::numbers::pi / 64);
+      std::size_t clear = 0;
+      for (std::int32_t j = 0; j < l.ny(); ++j) {
+        for (std::int32_t i = 0; i < l.nx(); ++i) {
+          const Vec2 c = l.centre(i, j);
+          if (!env.locate(c) || distance(o, c) < 1e-3) continue;
+          // From a point just along the line of sight: the corner itself touches the walls.
+          const Vec2 from = o + (1e-4 / distance(o, c)) * (c - o);
+          const bool visible = env.segment_inside(o, c);
+          if (l.at(i, j)) CHECK(visible);
+          if (distance(o, c) <= sure && env.clear_of_boundary(from, c, 1e-6)) {
+            ++clear;
+            CHECK(l.at(i, j));
+          }
+        }
+      }
+      CHECK(clear > 1000);
+      // Nothing inside the wall.
+      for (std::int32_t j = 0; j < l.ny(); ++j)
+        for (std::int32_t i = 0; i < l.nx(); ++i)
+          if (l.at(i, j)) CHECK(env.locate(l.centre(i, j)));
+    }
+  }
+}
+
+TEST_CASE("marking runs sets the cells they name, across words, and counts the new ones",
+          "[geometry][mapping]") {
+  KnownLattice a(Box{{0, 0}, {1, 0.7}}, 150), b(Box{{0, 0}, {1, 0.7}}, 150);
+  RandomStream rng(7, 0, "runs");
+  for (int round = 0; round < 200; ++round) {
+    std::vector<LatticeRun> runs;
+    for (int k = 0; k < 5; ++k) {
+      const auto j = static_cast<std::int32_t>(rng.uniform(0, a.ny() - 1e-9));
+      const auto i0 = static_cast<std::int32_t>(rng.uniform(0, a.nx() - 1e-9));
+      const auto i1 =
+          std::min<std::int32_t>(a.nx() - 1, i0 + static_cast<std::int32_t>(rng.uniform(0, 140)));
+      runs.push_back({j, i0, i1});
+    }
+    std::vector<std::size_t> fresh;
+    const std::uint64_t before = a.count();
+    const std::uint64_t added = a.mark(runs, &fresh);
+    CHECK(a.count() == before + added);
+    CHECK(fresh.size() == added);
+    std::uint64_t set_one_by_one = 0;
+    for (const LatticeRun& r : runs)
+      for (std::int32_t i = r.i0; i <= r.i1; ++i)
+        if (!b.at(i, r.j)) {
+          b.set(i, r.j);
+          ++set_one_by_one;
+        }
+    CHECK(added == set_one_by_one);
+    for (const std::size_t k : fresh) {
+      const auto i = static_cast<std::int32_t>(k % static_cast<std::size_t>(a.nx()));
+      const auto j = static_cast<std::int32_t>(k / static_cast<std::size_t>(a.nx()));
+      CHECK(a.at(i, j));
+    }
+  }
+  CHECK(a.common(b) == b.count());
+  CHECK(a.count() == b.count());
+}
+
+TEST_CASE("outer rings that touch their box at single vertices open to it", "[geometry][mapping]") {
+  // A diamond touches its box at four vertices: four corner pockets.
+  const Environment diamond({{1, 0}, {2, 1}, {1, 2}, {0, 1}}, {});
+  const auto d = map_elements(diamond, true);
+  REQUIRE(d.size() == 4);
+  CHECK(believed_environment(diamond, d, {false, false, false, false})->area() == Approx(4.0));
+  CHECK(believed_environment(diamond, d, {true, false, true, false})->area() == Approx(3.0));
+  CHECK(believed_environment(diamond, d, {true, true, true, true})->area() == Approx(2.0));
+  // A spike: a ring that meets its box's top side at one vertex, between two pockets.
+  const Environment spike({{0, 0}, {4, 0}, {4, 2}, {2, 1}, {1.5, 3}, {1, 1}, {0, 2}}, {});
+  const auto s = map_elements(spike, true);
+  REQUIRE(s.size() == 2);
+  const double box = 4 * 3;
+  CHECK(believed_environment(spike, s, {false, false})->area() == Approx(box));
+  CHECK(believed_environment(spike, s, {true, true})->area() == Approx(spike.area()));
+  const double one = believed_environment(spike, s, {true, false})->area();
+  const double other = believed_environment(spike, s, {false, true})->area();
+  CHECK(one + other == Approx(box + spike.area()));  // the two pockets tile box \ Ω
 }

@@ -217,3 +217,44 @@ TEST_CASE("metrics.csv follows the maps as they grow", "[mapping][metrics]") {
   CHECK(out.map_bytes_new <= out.map_bytes);
   CHECK(out.map_bytes_new > 0);
 }
+
+TEST_CASE("a broadcast packs readings not yet sent in order, then older ones in turn",
+          "[mapping][network]") {
+  const Scenario s = paper("two_obstacles.json");
+  MappingConfig config;
+  config.known = KnownEnvironment::none;
+  config.max_bytes = 200;
+  Mapping m(*s.environment, *s.density, 0.0, 0.3, config, 2, false);
+  // Robot 0 takes readings along a line; robot 1 stays where it starts.
+  m.start(0, {0.05, 0.05}, SimTime::zero());
+  m.start(1, {0.95, 0.95}, SimTime::zero());
+  for (int k = 1; k <= 8; ++k)
+    m.moved(0, {0.05 + 0.1 * k, 0.05}, 0.1, SimTime::from_seconds(k));
+  const std::size_t own = m.scans().size() - 1;  // robot 1 took one
+  REQUIRE(own >= 8);
+  std::vector<std::uint32_t> sent;
+  for (int b = 0; b < 40; ++b) {
+    const MapPayload p = m.pack(0);
+    REQUIRE(p.scans);
+    std::uint32_t bytes = 0;
+    for (const std::uint32_t id : *p.scans) {
+      bytes += m.scans()[id].bytes();
+      sent.push_back(id);
+    }
+    CHECK(p.bytes == bytes);
+    CHECK(p.bytes <= 200);
+    CHECK_FALSE(p.scans->empty());
+    if (b % 2 == 0) m.merge(1, p);  // every other broadcast lost
+  }
+  // Each of robot 0's readings once, in the order it took them, before any is sent again.
+  std::vector<std::uint32_t> first(sent.begin(), sent.begin() + static_cast<long>(own));
+  std::vector<std::uint32_t> expected;
+  for (std::uint32_t id = 0; id < m.scans().size(); ++id)
+    if (id != 1) expected.push_back(id);  // reading 1 is robot 1's start
+  CHECK(first == expected);
+  // Then again, in turn: every reading repeated, so robot 1 holds them all despite the losses.
+  for (const std::uint32_t id : expected)
+    CHECK(std::count(sent.begin(), sent.end(), id) >= 2);
+  CHECK(m.lattice(1).common(m.lattice(0)) == m.lattice(0).count());
+  CHECK(m.new_bytes_sent() < m.bytes_sent());
+}
