@@ -114,9 +114,12 @@ TEST_CASE("with an unlimited range a map holds what is visible from where readin
 
 TEST_CASE("decentralized, robots share their maps in their broadcasts, also under loss",
           "[mapping][network]") {
-  for (const double loss : {0.0, 0.6}) {
+  for (const double loss : {0.0, 0.6, -1.0}) {
     INFO("loss " << loss);
-    const nlohmann::json network{{"loss", {{"model", "bernoulli"}, {"p", loss}}}};
+    // -1: no loss, every message delayed by 0.3 s to 0.5 s (three to five broadcasts).
+    const nlohmann::json network =
+        loss >= 0.0 ? nlohmann::json{{"loss", {{"model", "bernoulli"}, {"p", loss}}}}
+                    : nlohmann::json{{"delay", {{"model", "uniform"}, {"min", 0.3}, {"max", 0.5}}}};
     Simulation sim(unknown("two_obstacles.json", "none", 0.5, {{"network", network}}));
     const CoverageOutcome out = sim.run();
     CHECK(out.converged);
