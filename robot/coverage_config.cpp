@@ -12,43 +12,53 @@ double robot_spacing(const Environment& env, std::size_t n) {
   return std::sqrt(env.area() / static_cast<double>(std::max<std::size_t>(n, 1)));
 }
 
-std::string_view to_string(ProjectionPolicy p) {
-  for (const auto& [policy, name] : kProjectionPolicies) {
-    if (policy == p) return name;
+namespace {
+// A choice's name in its table of (value, name) pairs, the value a name stands for, and
+// every name: the one list of names each choice has.
+template <class Table, class Value>
+std::string_view name_in(const Table& table, Value v) {
+  for (const auto& [value, name] : table) {
+    if (value == v) return name;
   }
   return "unknown";
+}
+
+template <class Table>
+auto value_named(const Table& table, std::string_view n)
+    -> std::optional<typename Table::value_type::first_type> {
+  for (const auto& [value, name] : table) {
+    if (name == n) return value;
+  }
+  return std::nullopt;
+}
+
+template <class Table>
+std::vector<std::string> names_in(const Table& table) {
+  std::vector<std::string> out;
+  for (const auto& [value, name] : table)
+    out.emplace_back(name);
+  return out;
+}
+}  // namespace
+
+std::string_view to_string(ProjectionPolicy p) {
+  return name_in(kProjectionPolicies, p);
 }
 
 std::optional<ProjectionPolicy> projection_named(std::string_view name) {
-  for (const auto& [policy, n] : kProjectionPolicies) {
-    if (n == name) return policy;
-  }
-  return std::nullopt;
+  return value_named(kProjectionPolicies, name);
 }
 
 std::string_view to_string(KnownEnvironment k) {
-  for (const auto& [known, name] : kKnownEnvironments) {
-    if (known == k) return name;
-  }
-  return "unknown";
+  return name_in(kKnownEnvironments, k);
 }
 
 std::optional<KnownEnvironment> known_environment_named(std::string_view name) {
-  for (const auto& [known, n] : kKnownEnvironments) {
-    if (n == name) return known;
-  }
-  return std::nullopt;
+  return value_named(kKnownEnvironments, name);
 }
 
 namespace {
 using Key = ConfigKey<CoverageConfig>;
-
-std::vector<std::string> names_of_policies() {
-  std::vector<std::string> out;
-  for (const auto& [policy, name] : kProjectionPolicies)
-    out.emplace_back(name);
-  return out;
-}
 
 // A tolerance as the run uses it: given, or derived from Ω and the robots' spacing.
 Key tolerance_key(const char* name, std::optional<double> CoverageConfig::*member,
@@ -86,7 +96,7 @@ ConfigKeys<CoverageConfig> motion_keys() {
 
 ConfigKeys<CoverageConfig> projection_keys() {
   const CoverageConfig d;
-  return {Key{ParamSpec::choice("projection", names_of_policies(),
+  return {Key{ParamSpec::choice("projection", names_in(kProjectionPolicies),
                                 "what the planner is told when a target lies outside Ω, whatever "
                                 "the type: the paper's \"discover\" or \"known\" (below)")
                   .defaults_to(std::string(to_string(d.projection))),
@@ -100,10 +110,7 @@ ConfigKeys<CoverageConfig> projection_keys() {
 
 ConfigKeys<CoverageConfig> environment_keys() {
   const CoverageConfig d;
-  std::vector<std::string> names;
-  for (const auto& [known, name] : kKnownEnvironments)
-    names.emplace_back(name);
-  return {Key{ParamSpec::choice("known", names,
+  return {Key{ParamSpec::choice("known", names_in(kKnownEnvironments),
                                 "what the robots know of Ω beforehand: \"full\" (the paper's), "
                                 "\"boundary\" (the outer ring; holes are found by sensing) or "
                                 "\"none\" (the bounding box; the outer ring's pockets and the "

@@ -12,7 +12,6 @@ Mapping::Mapping(const Environment& env, const Density& density, double radius, 
       radius_(radius),
       range_(range),
       config_(config),
-      robots_(robots),
       elements_(map_elements(env, config.known == KnownEnvironment::none)),
       travelled_(robots, 0.0),
       free_cells_(KnownLattice::of_free_space(env, static_cast<std::uint32_t>(config.cells))),
@@ -129,16 +128,10 @@ void Mapping::add(std::size_t index, std::uint32_t s, SimTime t) {
       robot_time_[index][k] = t.seconds();
     m.filled = m.order.size();
   }
+  // An obstacle is known once its last wall is seen (the belief follows in belief()).
   if (!m.walls.add(scan)) return;
-  bool changed = false;
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
-    if (!m.known[e] && m.walls.seen(elements_[e])) {
-      m.known[e] = true;
-      changed = true;
-    }
-  }
-  if (!changed) return;
-  ++belief_changes_;
+  for (std::size_t e = 0; e < elements_.size(); ++e)
+    if (!m.known[e] && m.walls.seen(elements_[e])) m.known[e] = true;
 }
 
 void Mapping::note_merged(SimTime t) {

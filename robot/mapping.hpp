@@ -56,8 +56,6 @@ class Mapping final : public MapExchange {
   const Belief& belief(std::uint32_t i) const;
   // Where robot i, standing at p (in Ω shrunk by the radius), believes its centre may go.
   const Environment& free_space(std::uint32_t i, Vec2 p) const;
-  // Times an obstacle became known to a map, over all maps.
-  std::uint64_t belief_changes() const { return belief_changes_; }
 
   MapPayload pack(std::uint32_t sender) override;
   void merge(std::uint32_t receiver, const MapPayload& payload) override;
@@ -100,7 +98,6 @@ class Mapping final : public MapExchange {
   // least-informed robot knows.
   std::size_t elements() const { return elements_.size(); }
   std::size_t elements_known_min() const;
-  bool shared() const { return maps_.size() == 1 && robots_ > 1; }
 
  private:
   struct RobotMap {
@@ -128,7 +125,6 @@ class Mapping final : public MapExchange {
   const Density& density_;
   double radius_, range_;
   MappingConfig config_;
-  std::size_t robots_;
   std::vector<MapElement> elements_;
   std::vector<Scan> scans_;
   std::vector<std::vector<LatticeRun>> runs_;  // each reading's cells
@@ -141,7 +137,7 @@ class Mapping final : public MapExchange {
   std::vector<std::size_t> fresh_;
   std::uint64_t free_count_ = 0;
   std::optional<SimTime> time_90_, time_100_;
-  std::uint64_t bytes_sent_ = 0, new_bytes_sent_ = 0, belief_changes_ = 0;
+  std::uint64_t bytes_sent_ = 0, new_bytes_sent_ = 0;
   std::function<SimTime()> now_;
 };
 

@@ -37,6 +37,14 @@ Measure member(std::string name, FieldKind kind, std::string unit, std::string d
   return outcome(member_field(std::move(name), kind, std::move(unit), std::move(description), p));
 }
 
+// A number of the outcome that may be missing: NaN in the outcome, null in final.json.
+Measure nullable(std::string name, std::string unit, std::string description, double O::*p) {
+  return outcome(
+      std::move(name), FieldKind::number, std::move(unit), std::move(description),
+      [p](const O& o) { return number_or_null(o.*p); },
+      [p](O& o, const nlohmann::json& j) { o.*p = j.is_null() ? NAN : j.get<double>(); });
+}
+
 // A message total of the run (NetworkTotals).
 Measure messages(std::string name, std::string description, std::uint64_t NetworkTotals::*p) {
   return outcome(
@@ -303,14 +311,11 @@ const std::vector<Measure>& measures() {
       member("failures.centroid_distance_max", K::number, "m",
              "largest final distance from the cell's centroid", &O::centroid_distance_max),
       member("bodies.radius", K::number, "m", "the robots' radius (0: points)", &O::radius).later(),
-      outcome(
-          "bodies.gap_min", K::number, "m",
+      nullable(
+          "bodies.gap_min", "m",
           "least distance between two robots' bodies at a motion step (negative: they overlapped; "
           "null for points)",
-          [](const O& o) { return number_or_null(o.body_gap_min); },
-          [](O& o, const nlohmann::json& j) {
-            o.body_gap_min = j.is_null() ? NAN : j.get<double>();
-          })
+          &O::body_gap_min)
           .in_runs(33)
           .in_summary()
           .later(),
@@ -381,24 +386,17 @@ const std::vector<Measure>& measures() {
              "the least fraction of Ω's free area one robot's map held at the end",
              &O::known_fraction_min)
           .later(),
-      outcome(
-          "mapping.time_to_90_percent", K::number, "s",
+      nullable(
+          "mapping.time_to_90_percent", "s",
           "when the robots' maps together first held 90% of Ω's free area (0 when Ω was known; "
           "null: never)",
-          [](const O& o) { return number_or_null(o.mapping_time_90); },
-          [](O& o, const nlohmann::json& j) {
-            o.mapping_time_90 = j.is_null() ? NAN : j.get<double>();
-          })
+          &O::mapping_time_90)
           .in_runs(42, "mapping_time_90")
           .in_summary()
           .later(),
-      outcome(
-          "mapping.time_to_100_percent", K::number, "s",
-          "when they first held all of it, to the lattice's cells (null: never)",
-          [](const O& o) { return number_or_null(o.mapping_time_100); },
-          [](O& o, const nlohmann::json& j) {
-            o.mapping_time_100 = j.is_null() ? NAN : j.get<double>();
-          })
+      nullable("mapping.time_to_100_percent", "s",
+               "when they first held all of it, to the lattice's cells (null: never)",
+               &O::mapping_time_100)
           .later(),
       member("mapping.disagreement", K::number, "",
              "mean over the robots of the fraction of Ω's free area some robot knew and it did "
@@ -432,12 +430,11 @@ const std::vector<Measure>& measures() {
              "(an obstacle not yet known whole: the paper's Fig. 4 without a map)",
              &O::discoveries)
           .later(),
-      outcome(
-          "mapping.cost_known", K::number, kCostUnit,
+      nullable(
+          "mapping.cost_known", kCostUnit,
           "H of the real positions at the end of the same run with Ω known (mapping.compare_known; "
           "null: not run)",
-          [](const O& o) { return number_or_null(o.cost_known); },
-          [](O& o, const nlohmann::json& j) { o.cost_known = j.is_null() ? NAN : j.get<double>(); })
+          &O::cost_known)
           .later(),
       outcome(
           "mapping.cost_ratio", K::number, "",

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -25,19 +26,43 @@ std::size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
+// A run of `name` with only the box known (range 0.3 m), its records in a scratch folder.
+struct RecordedRun {
+  Scenario scenario;
+  std::filesystem::path dir;
+  RunRecorder recorder;
+  CoverageOutcome outcome;
+  RecordedRun(const std::string& name, const nlohmann::json& extra)
+      : scenario(parsed(name, extra)),
+        dir(covsim::test::scratch_dir("unknown-area-" + name)),
+        recorder(dir, scenario.robot_positions, scenario.recording),
+        outcome(run_coverage(scenario, &recorder)) {
+    recorder.commit();
+  }
+  static Scenario parsed(const std::string& name, const nlohmann::json& extra) {
+    nlohmann::json j = covsim::test::paper(name).json;
+    j["environment"]["known"] = "none";
+    j["sensor"]["range"] = 0.3;
+    j.merge_patch(extra);
+    return covsim::test::parse_beside_paper(j, name);
+  }
+  // The run folder as covsim run writes it, read back.
+  RunFiles read_back() const {
+    std::ofstream(dir / "scenario.json")
+        << portable_scenario(scenario, std::string(COVSIM_SOURCE_DIR) + "/scenarios").dump(2);
+    std::ofstream(dir / "final.json") << final_json(outcome);
+    return read_run_files(dir);
+  }
+};
+
 }  // namespace
 
 TEST_CASE("map.csv holds when each cell became known, and the scene shades the rest",
           "[figures][mapping]") {
-  nlohmann::json j = covsim::test::paper("u_shape.json").json;
-  j["environment"]["known"] = "none";
-  j["sensor"]["range"] = 0.3;
-  j["mapping"] = {{"compare_known", false}};
-  const Scenario s = covsim::test::parse_beside_paper(j, "u_shape.json");
-  const auto dir = covsim::test::scratch_dir("unknown-area");
-  RunRecorder recorder(dir, s.robot_positions, s.recording);
-  const CoverageOutcome out = run_coverage(s, &recorder);
-  recorder.commit();
+  const RecordedRun recorded("u_shape.json", {{"mapping", {{"compare_known", false}}}});
+  const Scenario& s = recorded.scenario;
+  const CoverageOutcome& out = recorded.outcome;
+  const RunRecorder& recorder = recorded.recorder;
   const KnownCells& kept = recorder.known_cells();
   REQUIRE_FALSE(kept.empty());
   CHECK(kept.size == Approx(1.0 / 200));
@@ -55,13 +80,10 @@ TEST_CASE("map.csv holds when each cell became known, and the scene shades the r
         Approx(out.known_fraction).margin(1e-12));
 
   // Read back from the run folder as written, to the last digit.
-  const std::string csv = covsim::test::file_text(dir / "map.csv");
+  const std::string csv = covsim::test::file_text(recorded.dir / "map.csv");
   CHECK(csv.rfind("x,y,t\n", 0) == 0);
   CHECK(count(csv, "\n") == kept.cells.size() + 1);
-  std::ofstream(dir / "scenario.json")
-      << portable_scenario(s, std::string(COVSIM_SOURCE_DIR) + "/scenarios").dump(2);
-  std::ofstream(dir / "final.json") << final_json(out);
-  const RunFiles run = read_run_files(dir);
+  const RunFiles run = recorded.read_back();
   CHECK(run.known.size == Approx(kept.size).epsilon(1e-12));
   REQUIRE(run.known.cells.size() == kept.cells.size());
   for (std::size_t k = 0; k < kept.cells.size(); ++k) {
@@ -86,16 +108,12 @@ TEST_CASE("map.csv holds when each cell became known, and the scene shades the r
 
 TEST_CASE("with robot_maps map.csv holds each robot's own map, never ahead of the readings",
           "[figures][mapping]") {
-  nlohmann::json j = covsim::test::paper("two_obstacles.json").json;
-  j["environment"]["known"] = "none";
-  j["sensor"]["range"] = 0.3;
-  j["network"] = {{"loss", {{"model", "bernoulli"}, {"p", 0.5}}}};
-  j["mapping"] = {{"compare_known", false}, {"robot_maps", true}};
-  const Scenario s = covsim::test::parse_beside_paper(j, "two_obstacles.json");
-  const auto dir = covsim::test::scratch_dir("robot-maps");
-  RunRecorder recorder(dir, s.robot_positions, s.recording);
-  const CoverageOutcome out = run_coverage(s, &recorder);
-  recorder.commit();
+  const RecordedRun recorded("two_obstacles.json",
+                             {{"network", {{"loss", {{"model", "bernoulli"}, {"p", 0.5}}}}},
+                              {"mapping", {{"compare_known", false}, {"robot_maps", true}}}});
+  const Scenario& s = recorded.scenario;
+  const CoverageOutcome& out = recorded.outcome;
+  const RunRecorder& recorder = recorded.recorder;
   const KnownCells& kept = recorder.known_cells();
   REQUIRE(kept.robots.size() == out.robots.size());
   std::size_t later = 0;
@@ -109,10 +127,7 @@ TEST_CASE("with robot_maps map.csv holds each robot's own map, never ahead of th
     }
   }
   CHECK(later > 0);  // readings took time to travel, and some were lost
-  std::ofstream(dir / "scenario.json")
-      << portable_scenario(s, std::string(COVSIM_SOURCE_DIR) + "/scenarios").dump(2);
-  std::ofstream(dir / "final.json") << final_json(out);
-  const RunFiles run = read_run_files(dir);
+  const RunFiles run = recorded.read_back();
   REQUIRE(run.known.robots.size() == kept.robots.size());
   CHECK(run.known.robots == kept.robots);
   // One robot drawn: its own map shaded.
