@@ -174,9 +174,11 @@ void add_planner_contract_command(CLI::App& app) {
     const ContractSummary s = run_contract(o->setup, o->seed, o->first, o->cases, o->jobs);
     std::cout << fmt::format(
         "{}: {} cases ({} reachable): {} reached, {} projected, {} stalled; {} failed; "
-        "path/L* mean {:.4f}, worst {:.4f} (case {}); worst path/bound {:.4f}; {} recoveries\n",
+        "path/L* mean {:.4f}, worst {:.4f} (case {}); worst path/bound {:.4f}; {} recoveries; {} "
+        "reversing ({} early)\n",
         o->setup.label(), s.cases, s.reachable, s.reached, s.projected, s.stalled, s.failures,
-        s.mean_ratio, s.worst_ratio, s.worst_ratio_case, s.worst_bound_use, s.recoveries);
+        s.mean_ratio, s.worst_ratio, s.worst_ratio_case, s.worst_bound_use, s.recoveries,
+        s.reversing, s.early_reversing);
     for (const ContractResult& r : s.failed)
       std::cout << "FAILED: " << r.failure << "\n  rerun: " << r.reproducer << '\n';
     if (s.failures > 0) throw std::runtime_error(fmt::format("{} cases failed", s.failures));

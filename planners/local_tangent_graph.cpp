@@ -137,11 +137,11 @@ std::vector<TangentNode> tangent_nodes(const SensorReading& r, Vec2 goal, double
 }
 
 ReachPoint reach_point(const SensorReading& r, Vec2 goal, const SensedChain* followed,
-                       double tolerance) {
+                       double tolerance, const std::function<bool(Vec2)>& admissible) {
   ReachPoint best{r.position, kInf};
   const auto consider = [&](Vec2 p) {
     const double d = distance(p, goal);
-    if (d < best.distance) best = {p, d};
+    if (d < best.distance && (!admissible || admissible(p))) best = {p, d};
   };
   const Vec2 x = r.position;
   const double dg = distance(goal, x);

@@ -5,6 +5,7 @@
 // when the way to it is free within range, and the discontinuity points of the visible
 // boundary), and the closest point to the goal of the visible free region (d_reach). The
 // reading's contacts are exact; its range pieces may carry noise.
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -72,7 +73,8 @@ struct ReachPoint {
 // toward the goal (the robot's own position for a contact sensor that may move that way),
 // the discontinuity points and the shadow segments between them, and every other visible
 // piece.
+// `admissible`, if given, leaves out the points it rejects.
 ReachPoint reach_point(const SensorReading& r, Vec2 goal, const SensedChain* followed,
-                       double tolerance);
+                       double tolerance, const std::function<bool(Vec2)>& admissible = {});
 
 }  // namespace covsim

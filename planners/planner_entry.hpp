@@ -48,6 +48,10 @@ struct PlannerContract {
   bool complete = false;
   // The longest path it may take in a case; unset: no bound.
   std::function<double(const PathBoundCase&)> path_bound;
+  // It never walks back over the ground it has just covered (geometry/reversals), but
+  // once after it has gone round an obstacle (TangentBug's walk to the projection, the
+  // shorter way round).
+  bool keeps_direction = false;
   // Parameters for a course of the suite whose narrowest passage is `narrowest` metres (a
   // grid planner needs cells that fit); unset: its defaults.
   std::function<Params(double narrowest)> course_params;

@@ -49,6 +49,7 @@ void TangentBug::set_goal(Vec2 goal) {
   path_ = 0.0;
   last_position_.reset();
   aim_.reset();
+  moved_ = false;
   idle_steps_ = 0;
   episodes_.clear();
   engaged_.clear();
@@ -66,6 +67,7 @@ void TangentBug::move_goal(Vec2 goal) {
   bound_ += shift;
   d_followed_ += shift;
   idle_steps_ = 0;
+  moved_ = false;  // the way back may be the way to the moved goal
 }
 
 PlanStep TangentBug::finish(Vec2 at, PlanStatus s) {
@@ -80,6 +82,58 @@ PlanStep TangentBug::move_toward(Vec2 x, Vec2 p, double max_step) {
   return PlanStep{d <= max_step ? p : x + (max_step / d) * (p - x), PlanStatus::moving};
 }
 
+bool TangentBug::retraces(Vec2 x, Vec2 p) const {
+  if (!moved_ || !motion_) return false;
+  // Back within a fifth of a radian of the way it came (a way that ends a step on no farther
+  // than a fifth of a step from it is the same ground), or the noise of it. (Within the noise
+  // a step back is no walk back: round a noisy wall's end, say.)
+  const Vec2 v = p - x;
+  const double back = -dot(v, *motion_);
+  return back > p_.noise_margin && std::fabs(cross(*motion_, v)) <= 1e3 * p_.tolerance + 0.2 * back;
+}
+
+bool TangentBug::against_trail(Vec2 x, Vec2 p) const {
+  const double length = distance(x, p);
+  if (trail_.size() < 2 || !(length > p_.tolerance) || !(step_ > 0.0)) return false;
+  const Vec2 u = (p - x) / length;
+  const double width = 2.0 * step_ + p_.noise_margin;
+  // Points along the way, at most 32, half a step apart on a short way.
+  const int samples = static_cast<int>(std::min(32.0, std::ceil(2.0 * length / step_)));
+  const double spacing = length / samples;
+  double beside = 0.0;  // how much of the way runs back beside the trail
+  for (int i = 1; i <= samples; ++i) {
+    const Vec2 q = x + (i * spacing) * u;
+    double against = kInf, along = kInf;
+    for (std::size_t k = 0; k + 1 < trail_.size(); ++k) {
+      const double d = distance(project_to_segment(q, trail_[k], trail_[k + 1]).point, q);
+      double& best = dot(trail_[k + 1] - trail_[k], u) < 0.0 ? against : along;
+      best = std::min(best, d);
+    }
+    if (against <= width && against < along - p_.tolerance) beside += spacing;
+  }
+  return beside >= step_;
+}
+
+PlanStep TangentBug::toward(const SensorReading& r, Vec2 p, double max_step) {
+  PlanStep s = move_toward(r.position, p, max_step);
+  if (by_touch(r) || p_.noise_margin > 0.0) return s;
+  // The view changes at a vertex the way passes through (a corner passed on the way to the
+  // wall behind it): Kamon et al.'s robot decides again there, and a step past it might
+  // have to come back.
+  const Vec2 x = r.position;
+  double reach = distance(x, s.next);
+  for (const SensedPiece& piece : r.visible().pieces) {
+    for (const Vec2 v : {piece.a, piece.b}) {
+      const double d = distance(x, v);
+      if (d <= p_.tolerance || d >= reach - p_.tolerance) continue;
+      if (distance(project_to_segment(v, x, s.next).point, v) > p_.tolerance) continue;
+      s.next = v;
+      reach = d;
+    }
+  }
+  return s;
+}
+
 void TangentBug::resume_motion_to_goal() {
   mode_ = Mode::motion_to_goal;
   h_prev_ = kInf;
@@ -87,6 +141,7 @@ void TangentBug::resume_motion_to_goal() {
 
 PlanStep TangentBug::step(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
+  step_ = max_step;
   if (mode_ == Mode::done) return PlanStep{x, status_};
   // A range reading taken elsewhere (the sensor reads less often than the robot steps, or
   // the last reading was lost) shows the view from there: its discontinuities, shadows and
@@ -98,7 +153,14 @@ PlanStep TangentBug::step(const SensorReading& r, double max_step) {
     path_ += moved;
     // Waiting for a reading is not stalling.
     if (moved > p_.tolerance || !stale) idle_steps_ = moved > p_.tolerance ? 0 : idle_steps_ + 1;
-    if (moved > p_.tolerance) motion_ = (x - *last_position_) / moved;
+    if (moved > p_.tolerance) {
+      motion_ = (x - *last_position_) / moved;
+      moved_ = true;
+      if (mode_ == Mode::follow) {
+        trail_.push_back(x);
+        if (trail_.size() > kTrail) trail_.erase(trail_.begin());
+      }
+    }
   }
   last_position_ = x;
   if (path_ > p_.path_budget || idle_steps_ > kMaxIdleSteps) return finish(x, PlanStatus::stalled);
@@ -140,12 +202,18 @@ PlanStep TangentBug::step(const SensorReading& r, double max_step) {
 
 TangentBug::Decision TangentBug::motion_to_goal(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
-  // Touching an obstacle gone round before that encloses the goal: project at once.
-  if (!r.contacts.empty()) {
-    for (std::size_t k = 0; k < known_.size(); ++k) {
-      if (known_[k].on_boundary(x, loop_tolerance()) && known_[k].encloses(goal_))
-        return walk_to(r, k, Mode::to_projection);
-    }
+  // An obstacle gone round before that encloses the goal: project at once when touching it,
+  // or when its point closest to the goal is in sight (else motion to goal may take the
+  // robot along that obstacle to where it touches it, and the walk to the projection back).
+  for (std::size_t k = 0; k < known_.size(); ++k) {
+    if (!known_[k].encloses(goal_)) continue;
+    if (!r.contacts.empty() && known_[k].on_boundary(x, loop_tolerance()))
+      return walk_to(r, k, Mode::to_projection);
+    const Vec2 p = known_[k].closest(goal_).point;
+    const double d = distance(x, p);
+    if (!by_touch(r) && d > p_.tolerance && d <= r.range &&
+        free_ray(r, (p - x) / d, p_.tolerance).distance >= d - p_.tolerance)
+      return walk_to(r, k, Mode::to_projection);
   }
   // The way to the goal open within the range, with a margin: the goal is a node, and every
   // other node (a point of the sensed boundary, at least the margin m from the way) has a
@@ -162,8 +230,12 @@ TangentBug::Decision TangentBug::motion_to_goal(const SensorReading& r, double m
   }
   const std::vector<TangentNode> nodes =
       tangent_nodes(r, goal_, bound_ - p_.progress, p_.tolerance);
+  // Not a node back along the way the robot came: going there walks the same ground twice.
+  // (Kamon et al.'s robot, moving continuously, turns back at the first instant such a node
+  // is the best: it stands at a local minimum, and follows the boundary from there.)
   const TangentNode* best = nullptr;
   for (const TangentNode& n : nodes) {
+    if (retraces(x, n.point)) continue;
     if (best == nullptr || n.heuristic < best->heuristic) best = &n;
   }
   // The heuristic distance must not increase: moving toward a node lowers it by the step,
@@ -173,7 +245,7 @@ TangentBug::Decision TangentBug::motion_to_goal(const SensorReading& r, double m
     heading_ = best->point;
     if (!best->is_goal && (engaged_.empty() || beyond(engaged_.back(), best->point, p_.tolerance)))
       engaged_.push_back(best->point);
-    return move_toward(x, best->point, max_step);
+    return toward(r, best->point, max_step);
   }
   // A local minimum: follow the boundary in the way.
   const FreeRay f = free_ray(r, unit(goal_ - x), p_.tolerance);
@@ -194,8 +266,8 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 bl
   // for while it lies ahead; standing on it, the direction of the last step that moved;
   // only a robot that has never moved takes the goal's. Between two equally good ones, the
   // one whose end lies nearer the goal.
-  const bool ahead = heading_ && distance(*heading_, x) > p_.tolerance;
-  const Vec2 ref = ahead ? unit(*heading_ - x) : motion_ ? *motion_ : unit(goal_ - x);
+  const bool on_the_way = heading_ && distance(*heading_, x) > p_.tolerance;
+  const Vec2 ref = on_the_way ? unit(*heading_ - x) : motion_ ? *motion_ : unit(goal_ - x);
   int dir = 0;
   double best_score = -kInf, best_end = kInf;
   const auto consider = [&](int d, Vec2 end) {
@@ -229,21 +301,48 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 bl
     const SensedChain& c = chains[best];
     episodes_.push_back({x, blocked_at});
     if (c.closed) return loop_closed(r, RecordedObstacle(c.points, 1, p_.tolerance));
-    consider(1, c.points.back());
-    consider(-1, c.points.front());
+    // Kamon et al. compare the local tangents with the motion; covsim the way to the next
+    // point of the stretch each way, which is the tangent when the robot stands on the wall,
+    // among the ways that have a point to head for (TangentBug::ahead). When the stretch ends
+    // where the robot stands (the wall it touches, seen edge-on, shows only the point under
+    // it): along that wall, as by touch. Only when every way forward goes back over the last
+    // step, that way: rather that than stop.
+    bool along_wall = false;
+    const bool on_it = closest_place(c.points, x).distance <= loop_tolerance();
+    // A way whose stretch, past the point headed for, runs back along the robot's last step
+    // (a corner just ahead, then the wall it came along) is taken only if no other is.
+    const auto leads_back = [&](const std::vector<Vec2>& stretch) {
+      return std::any_of(stretch.begin(), stretch.end(), [&](Vec2 q) { return retraces(x, q); });
+    };
+    for (int pass = 0; pass < 3 && dir == 0; ++pass) {
+      const bool keep_on = pass < 2;
+      for (int d : {1, -1}) {
+        std::vector<Vec2> stretch = c.points;
+        if (d < 0) std::reverse(stretch.begin(), stretch.end());
+        const std::optional<Ahead> a = ahead(stretch, blocked_at, x, d, keep_on);
+        if (!a) continue;
+        const PolylinePlace at = closest_place(stretch, a->point);
+        if (pass == 0 && leads_back({stretch.begin() + static_cast<std::ptrdiff_t>(at.segment + 1),
+                                     stretch.end()}))
+          continue;
+        consider(d, a->next);
+      }
+      if (dir == 0 && on_it && pass > 0) {
+        for (int d : {1, -1}) {
+          const auto e = walking_edge(r, d, p_.tolerance);
+          if (e && !(keep_on && retraces(x, d > 0 ? e->b : e->a))) consider(d, d > 0 ? e->b : e->a);
+        }
+        along_wall = dir != 0;
+      }
+    }
     const PolylinePlace at = closest_place(c.points, blocked_at);
     boundary = at.point;
-    if (dir != 0 && at.segment + 1 < c.points.size())
+    if (along_wall) {
+      const auto e = walking_edge(r, dir, p_.tolerance);
+      trace_direction_ = unit((dir > 0 ? e->b : e->a) - x);
+    } else if (dir != 0 && at.segment + 1 < c.points.size()) {
       trace_direction_ =
           static_cast<double>(dir) * unit(c.points[at.segment + 1] - c.points[at.segment]);
-    if (dir == 0) {
-      // The stretch ends where the robot stands (the wall it touches, seen edge-on, shows
-      // only the point under it): along that wall, as by touch.
-      for (int d : {1, -1}) {
-        if (const auto e = walking_edge(r, d, p_.tolerance)) consider(d, d > 0 ? e->b : e->a);
-      }
-      const auto e = dir != 0 ? walking_edge(r, dir, p_.tolerance) : std::nullopt;
-      if (e) trace_direction_ = unit((dir > 0 ? e->b : e->a) - x);
     }
     // With noise, d_reach and d_followed each err by the noise: a leave must beat the last
     // one (the bound) by the progress, so that leaves are finitely many.
@@ -258,6 +357,7 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 bl
   walked_ = 0.0;
   head_ = anchor_ = boundary;
   trace_.assign(1, boundary);
+  trail_.assign(1, x);
   traced_ = 0.0;
   return std::nullopt;
 }
@@ -287,7 +387,7 @@ std::optional<SensedChain> TangentBug::followed_chain(const SensorReading& r) co
 }
 
 bool TangentBug::record(const SensedChain& c) {
-  const PolylinePlace at = closest_place(c.points, head_);
+  const PolylinePlace at = closest_place(c.points, trace_.back());
   const double eps = loop_tolerance();
   const Vec2 began = trace_.front();
   std::vector<Vec2> ahead{at.point};
@@ -309,17 +409,73 @@ bool TangentBug::record(const SensedChain& c) {
   return false;
 }
 
-PlanStep TangentBug::chase(const SensorReading& r, const SensedChain& c, double max_step) {
-  const Vec2 x = r.position, node = c.points.back();
-  if (distance(node, x) <= p_.tolerance) {
-    // The stretch ends where the robot stands: along the wall it touches, if any.
-    if (!r.contacts.empty()) return walk(r, max_step, std::nullopt);
-    return PlanStep{x, PlanStatus::moving};
+std::optional<TangentBug::Ahead> TangentBug::ahead(const std::vector<Vec2>& stretch, Vec2 from,
+                                                   Vec2 x, int dir, bool keep_on) const {
+  // Seen from the robot, the stretch's points turn one way (counter-clockwise in the walking
+  // order of direction +1): the first that lies half a turn or more from the first direction
+  // ends the part it can head for straight with the stretch before it on the obstacle's side.
+  // (From a corner it stands on, the end of a stretch that wraps round it lies back along
+  // the wall it came by.)
+  // From `from`'s place, or from the robot's own if it stands by the stretch (within two
+  // steps) farther on: the part before lies behind it (at a stretch's end the robot sees the
+  // stretch run back from its feet; beside a wall it reached near one end, the wall runs
+  // back past the point it is blocked at).
+  PolylinePlace at = closest_place(stretch, from);
+  const PolylinePlace own = closest_place(stretch, x);
+  if (own.distance <= std::max(loop_tolerance(), 2.0 * step_ + p_.noise_margin) &&
+      (own.segment > at.segment ||
+       (own.segment == at.segment &&
+        distance(stretch[own.segment], own.point) > distance(stretch[at.segment], at.point))))
+    at = own;
+  std::vector<Vec2> points{at.point};
+  for (std::size_t k = at.segment + 1; k < stretch.size(); ++k) {
+    if (beyond(stretch[k], points.back(), p_.tolerance)) points.push_back(stretch[k]);
   }
-  head_ = node;
-  anchor_ = c.points.size() > 1 ? c.points[c.points.size() - 2] : node;
-  heading_ = node;
-  return move_toward(x, node + p_.noise_margin * unit(node - x), max_step);
+  std::optional<Vec2> first, next;
+  std::vector<Ahead> out;  // the points it may head for, nearest first
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Vec2 w = points[k] - x;
+    if (norm(w) <= p_.tolerance) continue;
+    if (!first) first = unit(w);
+    if (!next && (k > 0 || points.size() == 1)) next = points[k];
+    const double turn = static_cast<double>(dir) * cross(*first, w);
+    const bool within_half_turn =
+        turn > p_.tolerance || (turn >= -p_.tolerance && dot(*first, w) > 0.0);
+    if (!within_half_turn) break;
+    if (keep_on && retraces(x, points[k])) continue;  // a point farther on may not: on to it
+    // The stretch's point before it: the anchor that finds the stretch again when the point
+    // drops out of sight (TangentBug::followed_chain).
+    Vec2 before = k > 0 ? points[k - 1] : stretch[at.segment];
+    if (k == 0 && !beyond(before, points[0], p_.tolerance) && at.segment > 0)
+      before = stretch[at.segment - 1];
+    out.push_back(Ahead{points[k], before, next.value_or(points[k])});
+  }
+  // The farthest, unless the way there runs back beside the way the robot followed the
+  // boundary so far (from just past a corner where the stretch wrapped round the robot, its
+  // far end lies back under the wall it came along).
+  for (auto a = out.rbegin(); a != out.rend(); ++a) {
+    if (!keep_on || mode_ != Mode::follow || !against_trail(x, a->point)) return *a;
+  }
+  return std::nullopt;
+}
+
+PlanStep TangentBug::chase(const SensorReading& r, const SensedChain& c, double max_step,
+                           bool keep_on) {
+  const Vec2 x = r.position;
+  std::optional<Ahead> a = ahead(c.points, head_, x, dir_, keep_on);
+  // Only back the way it came: rather that than stand still.
+  if (!a && keep_on) a = ahead(c.points, head_, x, dir_, false);
+  if (!a) {
+    // Nothing ahead beyond where the robot stands: along the wall it touches, if any.
+    const auto e = walking_edge(r, dir_, p_.tolerance);
+    if (!e) return PlanStep{x, PlanStatus::moving};
+    head_ = anchor_ = dir_ > 0 ? e->b : e->a;
+    return walk(r, max_step, std::nullopt);
+  }
+  head_ = a->point;
+  anchor_ = a->before;
+  heading_ = a->point;
+  return toward(r, a->point + p_.noise_margin * unit(a->point - x), max_step);
 }
 
 TangentBug::Decision TangentBug::follow(const SensorReading& r, double max_step) {
@@ -338,7 +494,13 @@ TangentBug::Decision TangentBug::follow(const SensorReading& r, double max_step)
     d_followed_ = std::min(d_followed_, distance(q, goal_) + p_.noise_margin);
   }
   if (c->points.size() == 1) d_followed_ = std::min(d_followed_, distance(c->points[0], goal_));
-  const ReachPoint reach = reach_point(r, goal_, &*c, p_.tolerance);
+  // Not back over the last step (that ground was just walked), nor behind a wall the robot
+  // touches (contacts are exact: range noise may show a way there).
+  const Vec2 x = r.position;
+  const ReachPoint reach = reach_point(r, goal_, &*c, p_.tolerance, [&](Vec2 p) {
+    return !retraces(x, p) && (r.contacts.empty() || !beyond(p, x, p_.tolerance) ||
+                               free_ray(r, unit(p - x), p_.tolerance).distance > 0.0);
+  });
   // The goal in sight counts even when it lies on the followed boundary (d_followed 0). The
   // reach point is sensed too: with noise it must be nearer beyond the noise of both.
   const bool in_sight =
@@ -353,12 +515,13 @@ TangentBug::Decision TangentBug::follow(const SensorReading& r, double max_step)
     return std::nullopt;
   }
   if (record(*c)) return loop_closed(r, RecordedObstacle(trace_, dir_, p_.tolerance));
-  return chase(r, *c, max_step);
+  return chase(r, *c, max_step, true);
 }
 
 TangentBug::Decision TangentBug::follow_by_touch(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
-  const ReachPoint reach = reach_point(r, goal_, nullptr, p_.tolerance);
+  const ReachPoint reach =
+      reach_point(r, goal_, nullptr, p_.tolerance, [&](Vec2 p) { return !retraces(x, p); });
   if (reach.distance < d_followed_ - p_.progress) {
     bound_ = d_followed_;
     leave_to_ = reach.point;
@@ -450,7 +613,9 @@ TangentBug::Decision TangentBug::walk_on(const SensorReading& r, double max_step
   straight_ = false;
   const std::optional<SensedChain> c = followed_chain(r);
   if (!c) return finish(x, PlanStatus::stalled);
-  return chase(r, *c, max_step);
+  // The shorter way round from where the loop closed, back over the last step only when that
+  // is the way: the one turn the walk to the projection makes.
+  return chase(r, *c, max_step, true);
 }
 
 TangentBug::Decision TangentBug::settle(const SensorReading& r, double max_step) {
@@ -493,7 +658,8 @@ TangentBug::Decision TangentBug::settle(const SensorReading& r, double max_step)
       const RingPlace here = o.closest(x);
       const int way = o.arc(here, target_, 1) <= o.arc(here, target_, -1) ? 1 : -1;
       const double arc = o.arc(here, target_, way);
-      const bool elsewhere = arc > distance(here.point, target_.point) + 2.0 * p_.noise_margin;
+      const bool elsewhere =
+          arc > distance(here.point, target_.point) + 2.0 * p_.noise_margin + p_.tolerance;
       if (!sought_ && (distance(x, goal_) > enough || elsewhere)) {
         dir_ = way;
         seeking_ = sought_ = true;
@@ -556,6 +722,7 @@ PlannerEntry tangent_bug_entry() {
     return [p] { return std::make_unique<TangentBug>(p); };
   };
   e.contract.complete = true;
+  e.contract.keeps_direction = true;
   // An empirical envelope, not a theorem (Kamon et al. prove termination, not a length
   // bound), evaluated with the map the planner never sees (which ring each recorded point
   // lies on): L* + for each boundary-following episode the followed ring's perimeter and

@@ -12,12 +12,19 @@
 //   d(x, O) + d(O, goal), for as long as that distance does not increase. When it would
 //   increase, the robot is at a local minimum and follows the blocking obstacle: the
 //   sensed boundary in the way to the goal.
-// - Boundary following, R > 0: toward the end, in the chosen direction, of the visible
-//   stretch of the followed boundary (its LTG node), without touching it. The followed
-//   stretch is the one through the node last headed for. R = 0: along the wall by touch.
-//   d_followed is the least distance to the goal of the followed boundary as sensed since
-//   this episode began; d_reach that of the visible free region beyond it. The robot leaves
-//   toward the d_reach point as soon as d_reach < d_followed, then resumes motion to goal.
+// - Boundary following, R > 0: along the visible stretch of the followed boundary in the
+//   chosen direction, toward its farthest point the robot can head for straight with the
+//   stretch before it on the obstacle's side, without touching it. The followed stretch is
+//   the one through the point last headed for. R = 0: along the wall by touch. The direction
+//   is kept for the whole episode: no way back over the robot's last step, or back beside
+//   the way it followed the boundary, is taken while another is open (a robot standing on a
+//   corner where the stretch wraps round it would otherwise head for its far end, back
+//   along the wall it came by). Motion to goal takes no node back along its last step
+//   either, and a straight way stops at a sensed vertex it passes through, where the view
+//   changes. d_followed is the least distance to the goal of the followed boundary as
+//   sensed since this episode began; d_reach that of the visible free region beyond it. The
+//   robot leaves toward the d_reach point as soon as d_reach < d_followed, then resumes
+//   motion to goal.
 //   Every node it heads for afterwards, until the next leave, must be closer to the goal
 //   than that d_followed, so episodes start ever closer to the goal and end.
 // - The followed boundary is recorded as the robot goes (R > 0: the sensed stretches, from
@@ -44,10 +51,10 @@
 // the robot goes to a projection, or after it ended, starts afresh.
 //
 // What was learned by going round an obstacle stays across goals: a later goal it encloses
-// is projected as soon as that obstacle blocks the way. A new goal restarts motion to goal
-// from where the robot stands. Every goal ends: a path longer than `path_budget`, or 20
-// steps in a row without moving, reports `stalled` (never expected for TangentBug: the
-// planner contract suite checks it does not happen).
+// is projected as soon as the robot touches that obstacle or sees its point closest to the
+// goal. A new goal restarts motion to goal from where the robot stands. Every goal ends: a
+// path longer than `path_budget`, or 20 steps in a row without moving, reports `stalled`
+// (never expected for TangentBug: the planner contract suite checks it does not happen).
 #include <limits>
 #include <optional>
 #include <vector>
@@ -116,12 +123,32 @@ class TangentBug final : public Planner {
   // The visible stretch of the followed boundary (the one through head_), its points in the
   // walking direction.
   std::optional<SensedChain> followed_chain(const SensorReading& r) const;
-  // Toward the followed stretch's end in the walking direction (past it by the noise margin,
-  // along the ray, which range noise does not turn).
-  PlanStep chase(const SensorReading& r, const SensedChain& c, double max_step);
-  // Records the followed stretch from head_ on; true when the record came back to where the
-  // episode began.
+  // Where boundary following heads on a stretch of boundary (its points in the walking
+  // order dir): from its place nearest `from` on, the farthest point the robot reaches
+  // straight with the stretch before it kept on the obstacle's side (it turns less than half
+  // a turn as seen from the robot) and, when `keep_on`, without walking back over its last
+  // step; with the stretch's point before it, and its first point beyond where the robot
+  // stands (the way along it). None beyond where the robot stands: nullopt.
+  struct Ahead {
+    Vec2 point, before, next;
+  };
+  std::optional<Ahead> ahead(const std::vector<Vec2>& stretch, Vec2 from, Vec2 x, int dir,
+                             bool keep_on) const;
+  // Along the followed stretch in the walking direction, toward its point ahead (past it by
+  // the noise margin, along the ray, which range noise does not turn).
+  PlanStep chase(const SensorReading& r, const SensedChain& c, double max_step, bool keep_on);
+  // Records the followed stretch from the record's end on; true when the record came back to
+  // where the episode began.
   bool record(const SensedChain& c);
+  // Whether the straight way from x to p runs back along the robot's last step for this goal.
+  bool retraces(Vec2 x, Vec2 p) const;
+  // Whether the straight way from x to p runs back beside the robot's way in this
+  // boundary-following episode for a step or more: within two steps of a part of it walked
+  // the other way, and nearer that than any part walked this way (a chord back under a wall
+  // it followed).
+  bool against_trail(Vec2 x, Vec2 p) const;
+  // Toward p, stopping at a vertex of the sensed boundary the straight way passes through.
+  PlanStep toward(const SensorReading& r, Vec2 p, double max_step);
   // The next point along the touched wall in dir_, stopping at the edge's end, at the edge's
   // point closest to the goal, and at `stop` if it lies ahead on this edge.
   PlanStep walk(const SensorReading& r, double max_step, std::optional<Vec2> stop);
@@ -147,9 +174,12 @@ class TangentBug final : public Planner {
   bool goal_behind_wall_ = false;  // a leave for the goal in sight met a wall (noise)
   double d_followed_ = 0.0;
   Vec2 leave_to_;
-  Vec2 head_;                 // the followed boundary's node last headed for
-  Vec2 anchor_;               // the followed stretch's point before head_
-  std::vector<Vec2> trace_;   // the followed boundary recorded in this episode
+  Vec2 head_;                // the followed boundary's node last headed for
+  Vec2 anchor_;              // the followed stretch's point before head_
+  std::vector<Vec2> trace_;  // the followed boundary recorded in this episode
+  // The robot's way in this episode, its last kTrail positions.
+  static constexpr std::size_t kTrail = 256;
+  std::vector<Vec2> trail_;
   Vec2 trace_direction_;      // the boundary's direction where the record began
   double traced_ = 0.0;       // the record's length
   std::size_t obstacle_ = 0;  // in known_: to_projection, to_closest and settle
@@ -165,6 +195,8 @@ class TangentBug final : public Planner {
   std::optional<Vec2> aim_;  // where the last decision moved toward
   // The direction of the last step that moved; kept across goals, it is the robot's own.
   std::optional<Vec2> motion_;
+  bool moved_ = false;  // the robot has moved since the goal was set or moved
+  double step_ = 0.0;   // the step length of the current step
   static constexpr int kMaxIdleSteps = 20;
   int idle_steps_ = 0;
   std::vector<Episode> episodes_;

@@ -14,6 +14,7 @@
 #include "geometry/configuration_space.hpp"
 #include "geometry/environment.hpp"
 #include "geometry/placement.hpp"
+#include "geometry/reversals.hpp"
 #include "geometry/visibility_graph.hpp"
 #include "planners/planner_registry.hpp"
 #include "planners/tangent_bug.hpp"
@@ -162,6 +163,9 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
   };
   planner->set_goal(res.goal);
   Vec2 x = res.start;
+  std::vector<Vec2> walked{x};
+  // TangentBug's loops closed when it decided the step from each position on.
+  std::vector<std::uint32_t> loops;
   res.status = PlanStatus::moving;
   for (; res.steps < max_steps && res.status == PlanStatus::moving; ++res.steps) {
     SensorReading reading = sense(env, x, setup.range);
@@ -188,6 +192,18 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
     res.length += distance(x, next);
     x = next;
     res.status = s.status;
+    walked.push_back(x);
+    const auto* bug = dynamic_cast<const TangentBug*>(planner.get());
+    loops.push_back(bug != nullptr ? bug->loops() : 0);
+  }
+  // Back along its way for a step (beyond range noise's zigzags, 3σ either side).
+  std::string turned;  // where it turned back, for the failure message
+  for (std::size_t k : reversals(walked, setup.step + 6.0 * setup.noise_sigma,
+                                 1e-6 * env.diameter() + 3.0 * setup.noise_sigma)) {
+    ++res.reversals;
+    if (loops[k] == 0) ++res.early_reversals;  // turned back before any loop closed
+    turned += fmt::format("{}at step {} ({}, {}){}", turned.empty() ? "" : ", ", k, walked[k].x,
+                          walked[k].y, loops[k] == 0 ? " before going round an obstacle" : "");
   }
   res.end = x;
   if (record) {
@@ -233,6 +249,14 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
     if (setup.noise_sigma == 0.0 && res.recoveries > 0)
       fail("a loop closed round an obstacle that does not enclose the goal");
   }
+  // Range noise shows walls nearer or farther than they are, and a way along them that the
+  // next reading contradicts: there the reversals are counted (ContractSummary::reversing),
+  // not refused (docs/tangent_bug.md).
+  if (entry != nullptr && entry->contract.keeps_direction && !setup.make &&
+      setup.noise_sigma == 0.0) {
+    if (res.early_reversals > 0 || res.reversals > 1)
+      fail(fmt::format("walked back over its own ground: {}", turned));
+  }
   if (!res.failure.empty()) {
     res.failure = fmt::format("{}: start ({}, {}), goal ({}, {}): {}", setup.label(), res.start.x,
                               res.start.y, res.goal.x, res.goal.y, res.failure);
@@ -247,6 +271,8 @@ void add(ContractSummary& s, const ContractResult& r) {
   if (r.status == PlanStatus::projected) ++s.projected;
   if (r.status == PlanStatus::stalled) ++s.stalled;
   s.recoveries += r.recoveries;
+  if (r.reversals > 0) ++s.reversing;
+  if (r.early_reversals > 0) ++s.early_reversing;
   if (r.status == PlanStatus::reached && r.shortest > 1e-9) {
     const double ratio = r.length / r.shortest;
     if (ratio > s.worst_ratio) {

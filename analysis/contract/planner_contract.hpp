@@ -80,7 +80,10 @@ struct ContractResult {
   double bound = 0.0;     // the path-length bound (infinite when none applies)
   std::size_t steps = 0;
   std::size_t episodes = 0, recoveries = 0;  // tangent_bug's boundary following
-  std::string failure;                       // empty when every check passed
+  // Where the path walked back over the ground it had just covered (analysis/contract/
+  // reversals), and how many of those came before TangentBug had gone round an obstacle.
+  std::size_t reversals = 0, early_reversals = 0;
+  std::string failure;  // empty when every check passed
   // "covsim planner-contract --planner ... --seed S --case I": reruns this case alone.
   std::string reproducer;
   // Recorded by run_contract_case only: the map, and the robot's path with, per step, what
@@ -97,6 +100,8 @@ ContractResult run_contract_case(const ContractSetup& setup, std::uint64_t seed,
 struct ContractSummary {
   std::size_t cases = 0, reachable = 0, reached = 0, projected = 0, stalled = 0, failures = 0;
   std::size_t recoveries = 0;
+  // Cases whose path walked back over its ground; of those, before going round an obstacle.
+  std::size_t reversing = 0, early_reversing = 0;
   double worst_ratio = 0.0;            // path length / L*, over the reached goals
   std::uint64_t worst_ratio_case = 0;  // the case index of worst_ratio, to rerun it
   double mean_ratio = 0.0;

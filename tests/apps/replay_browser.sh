@@ -29,16 +29,16 @@ status() {  # status URL: the page's #status, Chromium's messages in err.log
     grep -o '<pre id="status">[^<]*' | sed 's/<pre id="status">//'
 }
 
-# u_shape converges after 268 motion steps: 269 frames; the slider moves to frame 134.
+# u_shape converges after 285 motion steps: 286 frames; the slider moves to frame 142.
 got=$(status "$page?selftest#t=20")
 echo "$got"
-want="selftest ok: frame 134 of 269, t=13.4, robots 5, cells 5, cost cursor t=13.4"
+want="selftest ok: frame 142 of 286, t=14.2, robots 5, cells 5, cost cursor t=14.2"
 [[ $got == "$want, "* ]] || fail "the replay did not draw the frame the slider moved to: $got"
 ! grep -q "Uncaught" err.log || fail "the replay page reported errors: $(cat err.log)"
 # The address's time opens the page at the nearest frame; the page writes the frame's time
 # into the address as the slider moves.
 [[ $got == *", opened t=20,"* ]] || fail "#t=20 did not open the page at t = 20 s: $got"
-[[ $got == *", url #t=13.4,"* ]] || fail "the address does not say the frame's time: $got"
+[[ $got == *", url #t=14.2,"* ]] || fail "the address does not say the frame's time: $got"
 [[ $got == *", address t=5 showed t=5" ]] || fail "a new address #t=5 did not move to t = 5 s: $got"
 [[ $(status "$page?selftest#t=3.14159") == *", opened t=3.1,"* ]] ||
   fail "#t=3.14159 did not open the page at the nearest frame, t = 3.1 s"

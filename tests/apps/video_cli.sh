@@ -10,21 +10,21 @@ command -v ffmpeg > /dev/null && command -v ffprobe > /dev/null ||
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 "$covsim" run "$source/scenarios/u_shape.json" --out u > /dev/null
-# u_shape converges at 26.8 s: at 10 simulated seconds per video second and 5 frames per
-# second, 13.4 frame intervals, rounded up to 14, from t = 0 to the end: 15 frames.
+# u_shape converges at 28.5 s: at 10 simulated seconds per video second and 5 frames per
+# second, 14.25 frame intervals, rounded up to 15, from t = 0 to the end: 16 frames.
 "$covsim" plot u --video u.mp4 --fps 5 --speed 10 --video-width 480 > /dev/null
 probe() {
   ffprobe -v error -count_frames -select_streams v:0 \
     -show_entries stream=codec_name,width,height,nb_read_frames -of csv=p=0 "$1"
 }
 got=$(probe u.mp4)
-[ "$got" = "h264,480,$(echo "$got" | cut -d, -f3),15" ] || fail "u.mp4: $got"
+[ "$got" = "h264,480,$(echo "$got" | cut -d, -f3),16" ] || fail "u.mp4: $got"
 height=$(echo "$got" | cut -d, -f3)
 [ $((height % 2)) -eq 0 ] && [ "$height" -gt 300 ] || fail "u.mp4 height $height"
 "$covsim" plot u --video u.gif --fps 5 --speed 20 --video-width 320 > /dev/null
 got=$(probe u.gif)
-# At 20 simulated seconds per video second: 6.7 intervals, rounded up to 7: 8 frames.
-case "$got" in gif,320,*,8) ;; *) fail "u.gif: $got (expected 8 frames, 320 wide)" ;; esac
+# At 20 simulated seconds per video second: 7.125 intervals, rounded up to 8: 9 frames.
+case "$got" in gif,320,*,9) ;; *) fail "u.gif: $got (expected 9 frames, 320 wide)" ;; esac
 # The legend takes rows under the map: without it (--layers) a frame is shorter.
 "$covsim" plot u --video bare.mp4 --fps 5 --speed 10 --video-width 480 --layers=-legend > /dev/null
 bare=$(probe bare.mp4 | cut -d, -f3)
@@ -36,7 +36,7 @@ command -v script > /dev/null || { echo "skipped: util-linux's script is not ins
 script -qec "$covsim run $source/scenarios/u_shape.json --out r --video r.mp4 > r.out" typescript \
   > /dev/null
 got=$(probe r.mp4)
-# 26.8 s in about 20 s of video at 25 frames per second: 501 frames, 960 wide by default.
+# 28.5 s in about 20 s of video at 25 frames per second: 501 frames, 960 wide by default.
 case "$got" in h264,960,*,501) ;; *) fail "run --video r.mp4: $got" ;; esac
 [ -f r/final.json ] && [ -f r/scene.svg ] || fail "run --video left no run folder: $(ls r)"
 grep -q "^wrote .*, r.mp4$" r.out || fail "run --video did not name the video: $(cat r.out)"
@@ -46,7 +46,7 @@ tr '\r' '\n' < typescript | grep -Eq "^video: frame [0-9]+ of 501 \([0-9]+%\)" |
 # Piped, no progress line; a bad extension stops the run before it starts, leaving nothing.
 "$covsim" run "$source/scenarios/u_shape.json" --out p --video p.gif --fps 5 --speed 20 \
   > /dev/null 2> p.err
-case "$(probe p.gif)" in gif,960,*,8) ;; *) fail "run --video p.gif: $(probe p.gif)" ;; esac
+case "$(probe p.gif)" in gif,960,*,9) ;; *) fail "run --video p.gif: $(probe p.gif)" ;; esac
 ! grep -q "video:" p.err || fail "progress written to a file: $(head -c 200 p.err)"
 set +e
 err=$("$covsim" run "$source/scenarios/u_shape.json" --out q --video q.webm 2>&1 >/dev/null)

@@ -4,6 +4,7 @@
 #include <limits>
 #include <set>
 
+#include "geometry/reversals.hpp"
 #include "planners/planner_run.hpp"
 #include "planners/recorded_obstacle.hpp"
 #include "planners/sensor_reading.hpp"
@@ -149,6 +150,30 @@ TEST_CASE("TangentBug standing on the corner it headed for follows on in its dir
     const PlannerRun run = go(env, start, goal, r);
     CHECK(run.status == PlanStatus::reached);
     CHECK(run.length <= shortest * (1.0 + 1e-9));
+  }
+}
+
+TEST_CASE("TangentBug walks the U's slot bottom once on its way to a target in the slot",
+          "[tangent_bug]") {
+  // A leg of the studies' u_shape run 19 (docs/studies.md): from the left arm to a target
+  // 1 mm inside the slot's right wall. Round the corner at the slot's bottom the robot saw
+  // the whole bottom of the room from the far corner, and the far end of that stretch lay
+  // straight back along the slot's bottom: it walked the bottom to its right end, back to
+  // its left end and again to the right. It now keeps its direction: down round the room
+  // until the loop closes, then the shorter way to the projection, without walking back
+  // over its own way.
+  const Environment env = u_room();
+  const Vec2 start{0.22257261661109454, 0.8938761955184795};
+  const Vec2 goal{0.6494769838517639, 0.9009757137187664};
+  for (double r : {0.5, 2.0, kInfinity}) {
+    INFO("range " << r);
+    TangentBug bug(TangentBugParams::for_environment(env.diameter(), boundary_length(env)));
+    const PlannerRun run = run_planner(env, bug, start, goal, r, 0.01, 20000);
+    CHECK(run.status == PlanStatus::projected);
+    CHECK(distance(run.path.back(), Vec2{0.65, goal.y}) < 1e-9);
+    CHECK(bug.loops() == 1);
+    // No five steps back over its way within a step of it.
+    CHECK(reversals(run.path, 0.05, 0.01).empty());
   }
 }
 

@@ -201,6 +201,37 @@ TEST_CASE("contract: cases that once failed a long run pass", "[contract]") {
        "hit; inside the obstacle the robot sensed nothing and stalled",
        0.01},
       {"tangent_bug", INFINITY, 98068, "the same", 0.01},
+      // Walks back over its own ground, each caught by the reversal check.
+      {"tangent_bug", 0.5, 146,
+       "motion to goal from a corner to the far end of a face's visible part, then back to "
+       "the corner when it became a node with a lower heuristic distance"},
+      {"tangent_bug", 2.0, 176,
+       "heading into an E's slot past the tip of its arm: the stretch's end became that tip, "
+       "behind the robot, a step back"},
+      {"tangent_bug", 2.0, 186,
+       "a leave down a cup's mouth, then back up it when following began at its far corner"},
+      {"tangent_bug", INFINITY, 541,
+       "motion to goal up a wall's face to its corner, then a leave back down the face"},
+      {"tangent_bug", INFINITY, 194,
+       "following chose the way whose stretch ends far off, not the tangent: back up the wall "
+       "it came down"},
+      {"tangent_bug", INFINITY, 1727,
+       "standing on an arm's tip, ahead of the point it was blocked at: it followed the "
+       "stretch from that point, back the way it came"},
+      {"tangent_bug", 0.0, 221,
+       "settling at the projection, a rounding error in the arc along the record sent it a "
+       "step away and back"},
+      {"tangent_bug", INFINITY, 3322,
+       "the goal's direction 6 m back along a 3 cm step: taken for a walk back, no way was "
+       "left but a touched wall, and a loop round a box never closed"},
+      {"tangent_bug", INFINITY, 5839,
+       "the walk to the projection started from a vertex behind the robot: one step back, "
+       "then on"},
+      {"tangent_bug", INFINITY, 6001,
+       "a stretch's end headed for with itself as the point before it: when it dropped out "
+       "of sight, a neighbouring obstacle's stretch was followed for ever"},
+      {"tangent_bug", 2.0, 7567,
+       "into a cup's cavity on a chord beside its lower arm, then out along that arm"},
   };
   for (const Case& c : cases) {
     ContractSetup s;
@@ -220,7 +251,8 @@ namespace {
 // Planners that break the contract in one way each: the harness must say so.
 class Liar final : public Planner {
  public:
-  enum Lie { reached_at_start, projects_everything, long_steps };
+  // walks_back: two steps toward the goal, back to the start, then it gives up (honestly).
+  enum Lie { reached_at_start, projects_everything, long_steps, walks_back };
   explicit Liar(Lie lie) : lie_(lie) {}
   std::string_view name() const override { return "liar"; }
   void set_goal(Vec2 goal) override { goal_ = goal; }
@@ -230,6 +262,16 @@ class Liar final : public Planner {
         return {r.position, PlanStatus::reached};
       case projects_everything:
         return {r.position, PlanStatus::projected};
+      case walks_back: {
+        // Two steps toward the goal (a wall may stop them), two back, and a stall.
+        if (steps_ == 0) start_ = r.position;
+        const Vec2 out = start_ + (max_step / distance(goal_, start_)) * (goal_ - start_);
+        ++steps_;
+        if (steps_ <= 2) return {r.position + (out - start_), PlanStatus::moving};
+        const double back = distance(r.position, start_);
+        if (back <= max_step) return {start_, PlanStatus::stalled};
+        return {r.position + (max_step / back) * (start_ - r.position), PlanStatus::moving};
+      }
       case long_steps:
         break;
     }
@@ -240,7 +282,8 @@ class Liar final : public Planner {
 
  private:
   Lie lie_;
-  Vec2 goal_;
+  Vec2 goal_, start_;
+  int steps_ = 0;
 };
 
 ContractSummary run_liar(Liar::Lie lie, bool complete) {
@@ -362,6 +405,40 @@ TEST_CASE("contract: a planner registered before the suite runs gets the contrac
   const ContractSummary* lies = checked(r, "registered_liar");
   REQUIRE(lies != nullptr);
   CHECK(lies->failures == 30);
+}
+
+TEST_CASE("contract: a planner that promises to keep its direction may not walk back",
+          "[contract]") {
+  // One that steps toward its goal, back to where it started, and gives up: an honest stall,
+  // but a walk back over its own ground, which a planner that keeps its direction (as
+  // TangentBug does) may not make before it has gone round an obstacle.
+  const auto entry = [](const char* name, bool keeps_direction) {
+    PlannerEntry e;
+    e.name = name;
+    e.description = "a step, back, and a stall";
+    e.contract.keeps_direction = keeps_direction;
+    e.make = [](const PlannerContext&, const Params&) -> PlannerSource {
+      return [] { return std::make_unique<Liar>(Liar::walks_back); };
+    };
+    return e;
+  };
+  const RegisteredPlanner promises(entry("walks_back", true));
+  const RegisteredPlanner not_promised(entry("walks_back_freely", false));
+  ContractSetup s;
+  s.complete = false;
+  s.planner = "walks_back";
+  const ContractSummary r = run_contract(s, kPlannerSeed, 0, 20, 1);
+  INFO((r.failed.empty() ? std::string() : r.failed.front().failure));
+  CHECK(r.stalled >= 15);
+  CHECK(r.early_reversing >= 15);  // all but those a wall stopped at once
+  CHECK(r.failures == r.early_reversing);
+  REQUIRE_FALSE(r.failed.empty());
+  CHECK(r.failed.front().failure.find("walked back over its own ground") != std::string::npos);
+  // Without the promise the same walks are counted, not refused.
+  s.planner = "walks_back_freely";
+  const ContractSummary free = run_contract(s, kPlannerSeed, 0, 20, 1);
+  CHECK(free.early_reversing == r.early_reversing);
+  CHECK(free.failures == 0);
 }
 
 TEST_CASE("contract: every planner keeps its promises for a robot with a body", "[contract]") {
