@@ -97,19 +97,42 @@ bool TangentBug::against_trail(Vec2 x, Vec2 p) const {
   if (trail_.size() < 2 || !(length > p_.tolerance) || !(step_ > 0.0)) return false;
   const Vec2 u = (p - x) / length;
   const double width = 2.0 * step_ + p_.noise_margin;
+  // The parts of the trail near the way (their boxes within `width` of the way's box), each
+  // walked with the way (along) or against it.
+  Box near;
+  near.add(x);
+  near.add(p);
+  near.lo = near.lo - Vec2{width, width};
+  near.hi = near.hi + Vec2{width, width};
+  struct Part {
+    Vec2 a, b;
+    bool against;
+  };
+  std::vector<Part> parts;
+  for (std::size_t k = 0; k + 1 < trail_.size(); ++k) {
+    const Vec2 a = trail_[k], b = trail_[k + 1];
+    if (std::max(a.x, b.x) < near.lo.x || std::min(a.x, b.x) > near.hi.x ||
+        std::max(a.y, b.y) < near.lo.y || std::min(a.y, b.y) > near.hi.y)
+      continue;
+    parts.push_back({a, b, dot(b - a, u) < 0.0});
+  }
+  if (std::none_of(parts.begin(), parts.end(), [](const Part& q) { return q.against; }))
+    return false;
   // Points along the way, at most 32, half a step apart on a short way.
   const int samples = static_cast<int>(std::min(32.0, std::ceil(2.0 * length / step_)));
   const double spacing = length / samples;
   double beside = 0.0;  // how much of the way runs back beside the trail
   for (int i = 1; i <= samples; ++i) {
     const Vec2 q = x + (i * spacing) * u;
-    double against = kInf, along = kInf;
-    for (std::size_t k = 0; k + 1 < trail_.size(); ++k) {
-      const double d = distance(project_to_segment(q, trail_[k], trail_[k + 1]).point, q);
-      double& best = dot(trail_[k + 1] - trail_[k], u) < 0.0 ? against : along;
-      best = std::min(best, d);
+    double against = kInf, along = kInf;  // squared distances
+    for (const Part& part : parts) {
+      const Vec2 f = project_to_segment(q, part.a, part.b).point;
+      const double d2 = dot(f - q, f - q);
+      double& best = part.against ? against : along;
+      best = std::min(best, d2);
     }
-    if (against <= width && against < along - p_.tolerance) beside += spacing;
+    if (against <= width * width && std::sqrt(against) < std::sqrt(along) - p_.tolerance)
+      beside += spacing;
   }
   return beside >= step_;
 }
