@@ -342,7 +342,8 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 bl
       for (int d : {1, -1}) {
         std::vector<Vec2> stretch = c.points;
         if (d < 0) std::reverse(stretch.begin(), stretch.end());
-        const std::optional<Ahead> a = ahead(stretch, blocked_at, x, d, keep_on);
+        const std::optional<Ahead> a =
+            ahead(stretch, blocked_at, x, d, keep_on, 2.0 * step_ + p_.noise_margin);
         if (!a) continue;
         const PolylinePlace at = closest_place(stretch, a->point);
         if (pass == 0 && leads_back({stretch.begin() + static_cast<std::ptrdiff_t>(at.segment + 1),
@@ -416,13 +417,19 @@ bool TangentBug::record(const SensedChain& c) {
   std::vector<Vec2> ahead{at.point};
   ahead.insert(ahead.end(), c.points.begin() + static_cast<std::ptrdiff_t>(at.segment + 1),
                c.points.end());
+  // The stretch may begin off the record's end: the boundary between was not seen (it lay
+  // hidden, or out of range, when the stretch passed it). The record bridges it, and does not
+  // close on the bridge: a loop is what the sensor saw come back to where it began.
+  const bool bridge = at.distance > eps;
   for (Vec2 q : ahead) {
     const Vec2 p = trace_.back();
     if (!beyond(q, p, p_.tolerance)) continue;
     // Back where the record began, going the same way: round the obstacle. (The other face
     // of a thin wall passes as near, the other way.)
     const Vec2 foot = project_to_segment(began, p, q).point;
-    if (traced_ > 4.0 * eps && within(foot, began, eps) && dot(q - p, trace_direction_) > 0.0) {
+    const bool seen = !(bridge && trace_.size() > 0 && q == ahead.front());
+    if (seen && traced_ > 4.0 * eps && within(foot, began, eps) &&
+        dot(q - p, trace_direction_) > 0.0) {
       trace_.push_back(foot);
       return true;
     }
@@ -433,19 +440,19 @@ bool TangentBug::record(const SensedChain& c) {
 }
 
 std::optional<TangentBug::Ahead> TangentBug::ahead(const std::vector<Vec2>& stretch, Vec2 from,
-                                                   Vec2 x, int dir, bool keep_on) const {
+                                                   Vec2 x, int dir, bool keep_on, double by) const {
   // Seen from the robot, the stretch's points turn one way (counter-clockwise in the walking
   // order of direction +1): the first that lies half a turn or more from the first direction
   // ends the part it can head for straight with the stretch before it on the obstacle's side.
   // (From a corner it stands on, the end of a stretch that wraps round it lies back along
   // the wall it came by.)
-  // From `from`'s place, or from the robot's own if it stands by the stretch (within two
-  // steps) farther on: the part before lies behind it (at a stretch's end the robot sees the
+  // From `from`'s place, or from the robot's own if it stands within `by` of the stretch
+  // farther on: the part before lies behind it (at a stretch's end the robot sees the
   // stretch run back from its feet; beside a wall it reached near one end, the wall runs
   // back past the point it is blocked at).
   PolylinePlace at = closest_place(stretch, from);
   const PolylinePlace own = closest_place(stretch, x);
-  if (own.distance <= std::max(loop_tolerance(), 2.0 * step_ + p_.noise_margin) &&
+  if (own.distance <= std::max(loop_tolerance(), by) &&
       (own.segment > at.segment ||
        (own.segment == at.segment &&
         distance(stretch[own.segment], own.point) > distance(stretch[at.segment], at.point))))
@@ -485,9 +492,10 @@ std::optional<TangentBug::Ahead> TangentBug::ahead(const std::vector<Vec2>& stre
 PlanStep TangentBug::chase(const SensorReading& r, const SensedChain& c, double max_step,
                            bool keep_on) {
   const Vec2 x = r.position;
-  std::optional<Ahead> a = ahead(c.points, head_, x, dir_, keep_on);
+  const double by = 2.0 * step_ + p_.noise_margin;
+  std::optional<Ahead> a = ahead(c.points, head_, x, dir_, keep_on, by);
   // Only back the way it came: rather that than stand still.
-  if (!a && keep_on) a = ahead(c.points, head_, x, dir_, false);
+  if (!a && keep_on) a = ahead(c.points, head_, x, dir_, false, by);
   if (!a) {
     // Nothing ahead beyond where the robot stands: along the wall it touches, if any.
     const auto e = walking_edge(r, dir_, p_.tolerance);

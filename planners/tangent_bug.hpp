@@ -124,7 +124,8 @@ class TangentBug final : public Planner {
   // walking direction.
   std::optional<SensedChain> followed_chain(const SensorReading& r) const;
   // Where boundary following heads on a stretch of boundary (its points in the walking
-  // order dir): from its place nearest `from` on, the farthest point the robot reaches
+  // order dir): from its place nearest `from` on (or the robot's own, if it stands within
+  // `by` of the stretch farther on), the farthest point the robot reaches
   // straight with the stretch before it kept on the obstacle's side (it turns less than half
   // a turn as seen from the robot) and, when `keep_on`, without walking back over its last
   // step; with the stretch's point before it, and its first point beyond where the robot
@@ -133,7 +134,7 @@ class TangentBug final : public Planner {
     Vec2 point, before, next;
   };
   std::optional<Ahead> ahead(const std::vector<Vec2>& stretch, Vec2 from, Vec2 x, int dir,
-                             bool keep_on) const;
+                             bool keep_on, double by) const;
   // Along the followed stretch in the walking direction, toward its point ahead (past it by
   // the noise margin, along the ray, which range noise does not turn).
   PlanStep chase(const SensorReading& r, const SensedChain& c, double max_step, bool keep_on);

@@ -135,15 +135,20 @@ def read_summary(out):
 
 
 def read_runs(out):
-    """A sweep folder's runs.csv, by column: parameters and text columns as written,
-    measures as numbers (NaN where empty)."""
+    """A sweep folder's runs.csv, by column: parameters and text columns as written (a
+    measure of words, such as `known`: full, boundary or none), numeric measures as numbers
+    (NaN where empty)."""
     import pandas as pd
 
     runs = pd.read_csv(Path(out) / "runs.csv", dtype=str, keep_default_na=False)
     text = set(parameters(out)) | {"stop_reason", "fingerprint", "error"}
     for column in runs.columns:
-        if column not in text:
+        if column in text:
+            continue
+        try:
             runs[column] = runs[column].map(_number)
+        except ValueError:
+            pass  # words: kept as written
     return runs
 
 
