@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Runs the unknown-environment study (mapping while covering) and prints its tables.
+"""Runs the unknown-environment study (mapping while covering) and writes its tables.
 
 office (30 robots) and maze (40 robots) with Ω not known beforehand (`environment.known`:
 "boundary", the outer ring known and the holes found by sensing, or "none", only the
@@ -25,13 +25,14 @@ bounding box, as on both scenarios) they share one row.
 
 Usage: python3 studies/mapping.py [--covsim PATH] [--jobs N] [--seeds N] [--markdown FILE]
 Runs are cached in out/study-mapping/ (one covsim output folder each, trajectory.csv.gz
-included); a rerun reuses them. The tables go to standard output (and to --markdown), the
-figure to docs/studies/mapping-sweeps.svg.
+included); a rerun reuses those the same build wrote and reruns the others. The tables go to docs/studies.md's generated section "mapping"
+(and to --markdown), the figure to docs/studies/mapping-sweeps.svg.
 """
 import argparse
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -90,13 +91,38 @@ def overrides(known, rng, loss):
     return sets
 
 
+def build_of(covsim):
+    """The build of the covsim program, as final.json's provenance gives it: (commit, dirty)
+    from `covsim --version` ("commit 0123456789ab, dirty; ...")."""
+    text = subprocess.run([str(covsim), "--version"], text=True, stdout=subprocess.PIPE,
+                          check=True).stdout
+    match = re.search(r"commit ([0-9a-f]+|unknown)(, dirty)?", text)
+    if not match:
+        raise study.StudyError(f"{covsim} --version: no commit in '{text.strip()}'")
+    return match.group(1), match.group(2) is not None
+
+
+BUILD = None  # set by main(): the build a cached run must come from to be reused
+
+
+def cached(final):
+    """Whether final.json is there and was written by this build (a run by another would mix
+    builds in one table). Two dirty builds of one commit cannot be told apart."""
+    if not final.exists():
+        return False
+    provenance = json.loads(final.read_text()).get("provenance", {})
+    commit, dirty = BUILD
+    return provenance.get("commit", "")[:len(commit)] == commit and \
+        provenance.get("dirty") == dirty
+
+
 def run(covsim, job):
     """One run into WORK/<name>/ (written as <name>.partial and renamed when done); its
     final.json."""
     scenario, known, rng, loss, seed = job
     folder = WORK / name(*job)
     final = folder / "final.json"
-    if not final.exists():
+    if not cached(final):
         partial = folder.with_name(folder.name + ".partial")
         shutil.rmtree(partial, ignore_errors=True)
         args = [str(covsim), "run", str(study.ROOT / "scenarios" / f"{scenario}.json"),
@@ -249,7 +275,7 @@ def run_paper(covsim, job):
     scenario, rng = job
     folder = WORK / f"paper-{scenario}-r{'inf' if rng is None else f'{rng:g}'}"
     final = folder / "final.json"
-    if not final.exists():
+    if not cached(final):
         partial = folder.with_name(folder.name + ".partial")
         shutil.rmtree(partial, ignore_errors=True)
         args = [str(covsim), "run", str(study.ROOT / "scenarios" / f"{scenario}.json"),
@@ -370,6 +396,8 @@ def main():
     covsim = args.covsim or study.program()
     if not os.access(covsim, os.X_OK):
         raise study.StudyError(f"--covsim: {covsim} is not an executable")
+    global BUILD
+    BUILD = build_of(covsim)
     seeds = list(range(1, args.seeds + 1))
     jobs = jobs_of(seeds)
     paper = paper_jobs()
@@ -390,7 +418,7 @@ def main():
               "and the cost over Ω known, against the sensor range](studies/mapping-sweeps.svg)",
               ""]
     text = "\n".join(lines) + "\n"
-    print(text, end="")
+    study.replace_section(study.DOCS / "studies.md", "mapping", lines)
     if args.markdown:
         with open(args.markdown, "w") as f:
             f.write(text)
