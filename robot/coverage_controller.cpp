@@ -293,7 +293,14 @@ Vec2 CoverageController::planner_position(const Robot& r) const {
 
 Vec2 CoverageController::in_planner_frame(Robot& r, Vec2 p) {
   if (!localization_) return p;
-  return p - (localization_->estimate(r.id) - localization_->odometry(r.id));
+  const Vec2 q = p - (localization_->estimate(r.id) - localization_->odometry(r.id));
+  // A fix's noise must not make a goal the robot can reach one it cannot: moved by the fix's
+  // error, a goal near a wall lands in it, and the planner walks round all of Ω to find it
+  // unreachable (e-puck with 2 cm of tracking noise: a goal 2.8 cm from the grown wall, moved
+  // 3.6 cm by a fix, sent its robot round the U). A goal in an obstacle on purpose (discover)
+  // stays there.
+  const Environment& space = free_space(r.id);
+  return space.contains(p) && !space.contains(q) ? space.closest_point(q) : q;
 }
 
 double CoverageController::reach(double sigma) const {

@@ -190,7 +190,8 @@ class CoverageController {
   // Where robot r's planner believes it is: its odometry; its position with exact
   // localization.
   Vec2 planner_position(const Robot& r) const;
-  // A point of Ω in the frame robot r's planner works in.
+  // A point of Ω in the frame robot r's planner works in; a point of r's free space stays in
+  // it (the map read in that frame).
   Vec2 in_planner_frame(Robot& r, Vec2 p);
   // How near its target a robot counts as there: the position tolerance, or, with a
   // localization, not nearer than three standard deviations of its estimate's jitter (it

@@ -265,14 +265,15 @@ void bind_simulation(py::module_& m) {
               d["planner"] = std::string(p->name());
               d["status"] = std::string(to_string(r.status));
               d["goal"] = to_array(r.goal);
+              d["planner_goal"] = to_array(r.planner_goal);
               if (const auto* bug = dynamic_cast<const TangentBug*>(p))
                 d["mode"] = std::string(to_string(bug->mode()));
               out.append(d);
             }
             return out;
           },
-          "Per robot: its planner, status (moving, reached, projected, stalled), goal, and "
-          "TangentBug's mode.");
+          "Per robot: its planner, status (moving, reached, projected, stalled), goal, the "
+          "goal in the frame the planner works in (its odometry's), and TangentBug's mode.");
 }
 
 }  // namespace covsim::python

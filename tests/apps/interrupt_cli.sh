@@ -9,6 +9,9 @@ covsim=$1 source=$2 work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 office="$source/scenarios/office.json"
+# An interrupted run is made long on any machine (finer motion steps): office alone converges
+# in about a second on a fast one, which may be before the signal.
+long="--set loops.loop2_period=0.02"
 
 # Sends SIG to a command once its folder shows it has started; prints its exit code.
 interrupt() {  # SIG WAIT-FOR ARGS...
@@ -22,7 +25,7 @@ interrupt() {  # SIG WAIT-FOR ARGS...
   echo $rc
 }
 
-rc=$(interrupt TERM run1.partial/trajectory.csv.partial run "$office" --out run1)
+rc=$(interrupt TERM run1.partial/trajectory.csv.partial run "$office" --out run1 $long)
 [ "$rc" -eq 143 ] || fail "SIGTERM: exit $rc: $(cat err.txt)"
 grep -q "interrupted by SIGTERM" err.txt || fail "no message: $(cat err.txt)"
 [ ! -e run1 ] && [ ! -e run1.partial ] || fail "an interrupted run left its folder: $(ls -d run1*)"
@@ -42,7 +45,7 @@ wait $pid
 echo keep > run2/notes.txt
 before=$(cd run2 && ls && cat final.json scenario.json | md5sum)
 echo stale > run2/final.json.partial  # what a killed `covsim plot` leaves
-rc=$(interrupt INT run2.partial/trajectory.csv.partial run "$office" --out run2)
+rc=$(interrupt INT run2.partial/trajectory.csv.partial run "$office" --out run2 $long)
 [ "$rc" -eq 130 ] && grep -q "interrupted by SIGINT" err.txt || fail "SIGINT: exit $rc: $(cat err.txt)"
 [ -z "$(find . -name '*.partial')" ] || fail "partial files left: $(find . -name '*.partial')"
 [ "$(cd run2 && ls && cat final.json scenario.json | md5sum)" = "$before" ] ||

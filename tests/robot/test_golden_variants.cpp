@@ -95,7 +95,7 @@ const Variant kVariants[] = {
          "latency": 0.05, "compensated": false}},
          "network": {"loss": {"model": "bernoulli", "p": 0.2}},
          "controller": {"projection": "known"}})",
-     "b4ef3beb9a4fa255"},
+     "0c6297d64d558b6f"},
     {"unknown Ω (none), short range, one shared map", "u_shape.json",
      R"({"environment": {"known": "none"}, "sensor": {"range": 0.3},
          "mapping": {"compare_known": false}})",
