@@ -25,8 +25,9 @@ bounding box, as on both scenarios) they share one row.
 
 Usage: python3 studies/mapping.py [--covsim PATH] [--jobs N] [--seeds N] [--markdown FILE]
 Runs are cached in out/study-mapping/ (one covsim output folder each, trajectory.csv.gz
-included); a rerun reuses those the same build wrote and reruns the others. The tables go to docs/studies.md's generated section "mapping"
-(and to --markdown), the figure to docs/studies/mapping-sweeps.svg.
+included); a rerun reuses those the same build wrote and reruns the others. The tables go
+to docs/studies.md's generated section "mapping" (and to --markdown), the figure to
+docs/studies/mapping-sweeps.svg.
 """
 import argparse
 import json

@@ -45,7 +45,8 @@ wait $pid
 echo keep > run2/notes.txt
 before=$(cd run2 && ls && cat final.json scenario.json | md5sum)
 echo stale > run2/final.json.partial  # what a killed `covsim plot` leaves
-rc=$(interrupt INT run2.partial/trajectory.csv.partial run "$office" --out run2 $long)
+rc=$(interrupt INT run2.partial/trajectory.csv.partial run "$office" --out run2 \
+  $long)
 [ "$rc" -eq 130 ] && grep -q "interrupted by SIGINT" err.txt || fail "SIGINT: exit $rc: $(cat err.txt)"
 [ -z "$(find . -name '*.partial')" ] || fail "partial files left: $(find . -name '*.partial')"
 [ "$(cd run2 && ls && cat final.json scenario.json | md5sum)" = "$before" ] ||
