@@ -104,8 +104,14 @@ void add_planner_contract_command(CLI::App& app) {
                   "Robot radius [m]: the planner works in the course shrunk by it (courses only)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  cmd->add_option("--resolution", o->setup.resolution, "grid_astar cell side [m]")
+  cmd->add_option("--resolution", o->setup.resolution,
+                  "Cell side of grid_astar's grid, or of a sensed map [m]")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--map", o->setup.map,
+                  "What a map planner plans on: given (Ω) or sensed (the walls its readings "
+                  "showed, unseen space free)")
+      ->check(CLI::IsMember({"given", "sensed"}))
+      ->capture_default_str();
   cmd->add_flag("--incomplete", o->incomplete,
                 "Check only that the planner stays in Ω, ends, and reports stalls honestly, "
                 "even if its registry entry promises to reach reachable goals");
@@ -136,6 +142,12 @@ void add_planner_contract_command(CLI::App& app) {
       throw InputError(
           fmt::format("planner-contract: --planner: planner \"{}\" {}", o->setup.planner, *why));
     }
+    if (o->setup.map != "given" &&
+        find_param(planner_registry().at(o->setup.planner).params, "map") == nullptr)
+      throw InputError(fmt::format(
+          "planner-contract: --map: planner \"{}\" offers no choice of map (it plans on what "
+          "it senses, or on nothing)",
+          o->setup.planner));
     o->setup.range = parse_range(o->range);
     o->setup.family = o->family == "combs" ? CaseFamily::combs : CaseFamily::courses;
     if (o->setup.radius > 0.0 && o->setup.family == CaseFamily::combs)

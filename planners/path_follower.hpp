@@ -17,6 +17,9 @@ class PathFollower {
   bool empty() const { return path_.empty(); }
   // Whether the last waypoint has been reached.
   bool done() const { return next_ >= path_.size(); }
+  // The whole path, and the index of the waypoint driven to next.
+  const std::vector<Vec2>& path() const { return path_; }
+  std::size_t next() const { return next_; }
   // The point at most max_step from `position` along the path (the robot may lag behind
   // the path by up to `tolerance`).
   Vec2 advance(Vec2 position, double max_step, double tolerance);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/predicates.hpp"
+#include "planners/planner_map.hpp"
+
 namespace covsim {
 
 PotentialFieldParams PotentialFieldParams::for_environment(double diameter) {
@@ -11,6 +14,50 @@ PotentialFieldParams PotentialFieldParams::for_environment(double diameter) {
   p.progress = 1e-3 * diameter;
   return p;
 }
+
+namespace {
+// The walls a reading shows: its visible pieces and the walls it touches.
+template <class F>
+void for_each_sensed_wall(const SensorReading& r, F&& f) {
+  for (const SensedPiece& p : r.visible().pieces)
+    f(p.a, p.b);
+  for (const ContactEdge& c : r.contacts)
+    f(c.a, c.b);
+}
+
+// Whether x -> y meets no wall the reading shows, but for one it starts or ends on, which it
+// must leave into (or reach from) that wall's free side, its left.
+bool open_in_reading(const SensorReading& r, Vec2 x, Vec2 y, double tolerance) {
+  bool open = true;
+  const auto on = [&](Vec2 p, Vec2 a, Vec2 b) {
+    return distance(p, project_to_segment(p, a, b).point) <= tolerance;
+  };
+  for_each_sensed_wall(r, [&](Vec2 a, Vec2 b) {
+    if (on(x, a, b)) {
+      open = open && cross(b - a, y - x) >= 0.0;
+    } else if (on(y, a, b)) {
+      open = open && cross(b - a, x - y) >= 0.0;
+    } else if (segments_intersect(x, y, a, b)) {
+      open = false;
+    }
+  });
+  return open;
+}
+
+// x -> y, stopped where it first crosses a wall the reading shows.
+Vec2 advance_in_reading(const SensorReading& r, Vec2 x, Vec2 y) {
+  double first = 1.0;
+  const Vec2 d = y - x;
+  for_each_sensed_wall(r, [&](Vec2 a, Vec2 b) {
+    if (!(orientation(x, y, a) * orientation(x, y, b) < 0 &&
+          orientation(a, b, x) * orientation(a, b, y) < 0))
+      return;
+    const double t = cross(a - x, b - a) / cross(d, b - a);
+    first = std::min(first, std::max(0.0, t));
+  });
+  return first < 1.0 ? x + first * d : y;
+}
+}  // namespace
 
 void PotentialField::set_goal(Vec2 goal) {
   goal_ = goal;
@@ -64,9 +111,11 @@ PlanStep PotentialField::step(const SensorReading& r, double max_step) {
   }
   // Final approach: a goal near enough and in sight is driven to straight.
   if (dg <= std::max(p_.influence, max_step) && (dg <= r.range || dg <= max_step) &&
-      env_.segment_inside(x, goal_)) {
+      (p_.sensed ? open_in_reading(r, x, goal_, env_.tolerance())
+                 : env_.segment_inside(x, goal_))) {
     if (dg <= max_step) {
-      status_ = PlanStatus::reached;
+      // On what it senses, a last step it could not see is claimed once taken.
+      if (!p_.sensed || dg <= r.range) status_ = PlanStatus::reached;
       return PlanStep{goal_, status_};
     }
     return PlanStep{x + (max_step / dg) * (goal_ - x), status_};
@@ -74,7 +123,8 @@ PlanStep PotentialField::step(const SensorReading& r, double max_step) {
   const Vec2 f = force(r);
   const double fn = norm(f);
   if (fn <= 1e-12) return PlanStep{x, status_};  // a minimum: the window will tell
-  return PlanStep{env_.advance(x, x + (std::min(max_step, dg) / fn) * f), status_};
+  const Vec2 to = x + (std::min(max_step, dg) / fn) * f;
+  return PlanStep{p_.sensed ? advance_in_reading(r, x, to) : env_.advance(x, to), status_};
 }
 
 PlannerEntry potential_field_entry() {
@@ -94,12 +144,14 @@ PlannerEntry potential_field_entry() {
                          "steps without progress after which it reports a stall")
           .at_least(1)
           .at_most(1e6)
-          .defaults_to(std::uint64_t{50})};
+          .defaults_to(std::uint64_t{50}),
+      planner_map_param()};
   e.make = [](const PlannerContext& ctx, const Params& params) -> PlannerSource {
     PotentialFieldParams p = PotentialFieldParams::for_environment(ctx.environment.diameter());
     if (auto v = params.maybe_number("influence")) p.influence = *v;
     p.repulsive_gain = params.number("repulsive_gain");
     p.stall_window = static_cast<std::size_t>(params.integer("stall_window"));
+    p.sensed = plans_on_sensed_map(params);
     p.progress = std::max(p.progress, 3.0 * ctx.sensor.spread());
     const Environment* env = &ctx.environment;
     return [env, p] { return std::make_unique<PotentialField>(*env, p); };

@@ -9,6 +9,10 @@
 // slides: the part of the step into the wall is removed. Within the influence distance of a goal it
 // sees in a straight line it drives straight there (so a goal on a wall can be reached).
 //
+// With planner.map "sensed" it never consults Ω: the final approach needs a line of sight
+// its reading shows clear, and a step that would cross a wall it senses stops at that wall.
+// On the given map (the default when Ω is known) it asks Ω for both, as before.
+//
 // Like every gradient method it can stop in a local minimum (a cup, a goal inside an
 // obstacle): when the distance to the goal has not fallen below its best by `progress`
 // within `stall_window` steps, it reports `stalled`; the coverage controller then treats
@@ -26,6 +30,7 @@ struct PotentialFieldParams {
   double repulsive_gain = 1.0;    // η in units of d0³ / 48
   std::size_t stall_window = 50;  // steps
   double progress = 1e-3;         // metres: the least gain that counts within a window
+  bool sensed = false;            // planner.map "sensed": Ω is never consulted
   // influence a tenth of Ω's bounding-box diameter, progress 1e-3 of it.
   static PotentialFieldParams for_environment(double diameter);
 };

@@ -11,6 +11,7 @@
 #include "geometry/placement.hpp"
 #include "geometry/ring_validation.hpp"
 #include "net/message.hpp"
+#include "planners/planner_map.hpp"
 #include "scenarios/component_reader.hpp"
 #include "scenarios/component_sections.hpp"
 #include "scenarios/input_file.hpp"
@@ -158,8 +159,9 @@ void read_components(const JsonValue& root, CoverageConfig& c) {
       if (c.localization.type != LocalizationConfig{}.type && planner != nullptr &&
           !planner->senses_only)
         loc->fail(fmt::format(
-            "{} localization needs a planner that plans from what it senses (tangent_bug); "
-            "{} plans on its map of Ω, from a position it would have to know exactly",
+            "{} localization needs a planner that plans from what it senses alone "
+            "(tangent_bug); {} plans on a map (given: Ω, from a position it would have to "
+            "know exactly; sensed: walls placed by an uncertain position, SLAM, not modelled)",
             c.localization.type, c.planner.type));
     }
   }
@@ -361,7 +363,7 @@ void check_limits(const JsonValue& root, const Scenario& s) {
 
 // Robots that do not know Ω (environment.known) map it from what they sense: every part
 // that would be told Ω, or needs a map from exact readings, is refused beside it.
-void check_mapping(const JsonValue& root, const CoverageConfig& c) {
+void check_mapping(const JsonValue& root, CoverageConfig& c) {
   if (!c.mapping.unknown()) {
     // Its defaults may be stated (a described scenario states them); others would be ignored.
     if (auto m = root.find("mapping"); m && !(c.mapping == MappingConfig{}))
@@ -372,11 +374,22 @@ void check_mapping(const JsonValue& root, const CoverageConfig& c) {
   }
   const JsonValue known = root.at("environment").at("known");
   const PlannerEntry* planner = planner_registry().find(c.planner.type);
-  if (planner != nullptr && !planner->senses_only)
-    known.fail(
-        fmt::format("robots that do not know Ω need a planner that plans from what it "
-                    "senses (tangent_bug); {} plans on a map of Ω",
-                    c.planner.type));
+  if (planner != nullptr && !planner->senses_only) {
+    // A map planner plans on what its robot sensed: implied, and the given map refused.
+    if (find_param(planner->params, kPlannerMapKey) == nullptr)
+      known.fail(
+          fmt::format("robots that do not know Ω need a planner that plans from what it senses "
+                      "(tangent_bug, or a map planner with planner.map \"sensed\"); {} "
+                      "plans on a map of Ω",
+                      c.planner.type));
+    if (c.planner.params.has(kPlannerMapKey) && !plans_on_sensed_map(c.planner.params))
+      root.at("planner")
+          .at(std::string(kPlannerMapKey))
+          .fail(
+              "robots that do not know Ω cannot plan on the given map: use \"sensed\" (the "
+              "default when environment.known is \"boundary\" or \"none\")");
+    c.planner.params.set(std::string(kPlannerMapKey), std::string("sensed"));
+  }
   if (c.projection == ProjectionPolicy::known)
     known.fail(
         "controller.projection \"known\" projects targets onto Ω, which the robots do "

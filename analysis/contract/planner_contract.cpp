@@ -111,11 +111,12 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
   res.seed = seed;
   res.index = index;
   res.reproducer = fmt::format(
-      "covsim planner-contract --planner {} --range {} --noise {} --step {}{}{} --seed {} --case "
-      "{}",
+      "covsim planner-contract --planner {} --range {} --noise {} --step {}{}{}{} --seed {} "
+      "--case {}",
       setup.planner, number(setup.range), setup.noise_sigma, setup.step,
       setup.family == CaseFamily::combs ? " --family combs" : "",
-      setup.radius > 0.0 ? fmt::format(" --radius {}", setup.radius) : "", seed, index);
+      setup.radius > 0.0 ? fmt::format(" --radius {}", setup.radius) : "",
+      setup.map == "given" ? "" : fmt::format(" --map {}", setup.map), seed, index);
   RandomStream rng(seed, index, "contract-case");
   const auto in_box = [&](const Box& b) {
     return Vec2{rng.uniform(b.lo.x, b.hi.x), rng.uniform(b.lo.y, b.hi.y)};
@@ -149,6 +150,9 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
   if (entry != nullptr && entry->contract.course_params)
     config.params = entry->contract.course_params(map.narrowest);
   if (setup.resolution) config.params.set("resolution", *setup.resolution);
+  // Planners that offer no choice of map plan on what they sense, or on nothing.
+  if (setup.map != "given" && entry != nullptr && find_param(entry->params, "map") != nullptr)
+    config.params.set("map", setup.map);
   if (entry != nullptr) config.params = with_defaults(entry->params, config.params);
   const bool complete = setup.complete.value_or(entry == nullptr || entry->contract.complete);
   const SensorSpec sensor{setup.noise_sigma};
@@ -297,9 +301,10 @@ std::string_view to_string(CaseFamily f) {
 }
 
 std::string ContractSetup::label() const {
-  return fmt::format("{} range={} noise={}{}{}", planner, number(range), noise_sigma,
+  return fmt::format("{} range={} noise={}{}{}{}", planner, number(range), noise_sigma,
                      family == CaseFamily::combs ? " combs" : "",
-                     radius > 0.0 ? fmt::format(" radius={}", radius) : "");
+                     radius > 0.0 ? fmt::format(" radius={}", radius) : "",
+                     map == "given" ? "" : " map=" + map);
 }
 
 ContractResult run_contract_case(const ContractSetup& setup, std::uint64_t seed,

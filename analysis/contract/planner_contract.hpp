@@ -61,11 +61,14 @@ struct ContractSetup {
   // grid_astar's cell side (unset: what its entry asks for the courses: a quarter of their
   // narrowest passage, so that every passage holds connected free cells).
   std::optional<double> resolution;
+  // What a map planner plans on (planner.map): "given" or "sensed" (planners that offer no
+  // such choice plan as they always do).
+  std::string map = "given";
   // Builds the planner under test for a course (a user's own planner, say); unset: the
   // planner named `planner`, from the registry.
   std::function<std::unique_ptr<Planner>(const Environment&, const SensorSpec&)> make;
   // A one-line description, e.g. "tangent_bug range=0.5 noise=0" (" combs" for that family,
-  // " radius=r" with a radius).
+  // " radius=r" with a radius, " map=sensed" on a sensed map).
   std::string label() const;
 };
 

@@ -176,7 +176,11 @@ TEST_CASE("what robots that do not know Ω cannot be told is refused", "[mapping
     }
     return std::string("no error");
   };
-  CHECK_THAT(error("planner", {{"type", "visibility_graph"}}),
+  // A map planner plans on what its robot sensed; on the given map it cannot.
+  CHECK(error("planner", {{"type", "visibility_graph"}}) == "no error");
+  CHECK_THAT(error("planner", {{"type", "grid_astar"}, {"map", "given"}}),
+             Contains("$.planner.map") && Contains("sensed"));
+  CHECK_THAT(error("planner", {{"type", "straight_line"}}),
              Contains("$.environment.known") && Contains("tangent_bug"));
   CHECK_THAT(error("controller", {{"projection", "known"}}), Contains("discover"));
   CHECK_THAT(error("controller", {{"type", "geodesic_lloyd"}}), Contains("geodesic"));
@@ -195,6 +199,35 @@ TEST_CASE("what robots that do not know Ω cannot be told is refused", "[mapping
   bad["environment"]["known"] = "partly";
   CHECK_THROWS_WITH(covsim::test::parse_beside_paper(bad, "u_shape.json"),
                     Contains("$.environment.known") && Contains("boundary"));
+}
+
+TEST_CASE("map planners plan on what their robots sensed when Ω is not known",
+          "[mapping][scenario]") {
+  // planner.map "sensed" is implied: the runs converge (every robot at its target or at the
+  // projection it found), never leave Ω (the controller checks every motion), and depend on
+  // the range, where the same planners on the given map do not.
+  for (const char* type : {"grid_astar", "visibility_graph"}) {
+    INFO(type);
+    const Scenario s = unknown("u_shape.json", "none", 0.3, {{"planner", {{"type", type}}}});
+    CHECK(s.coverage.planner.params.text("map") == "sensed");
+    const CoverageOutcome near = Simulation(s).run();
+    CHECK(near.converged);
+    const CoverageOutcome far =
+        Simulation(unknown("u_shape.json", "none", nullptr, {{"planner", {{"type", type}}}})).run();
+    CHECK(far.converged);
+    CHECK(near.fingerprint != far.fingerprint);
+    // Ω known, the map a stated choice: sensed runs differ from given ones.
+    nlohmann::json j = paper("u_shape.json").json;
+    j["planner"] = {{"type", type}, {"map", "sensed"}};
+    const CoverageOutcome sensed =
+        Simulation(covsim::test::parse_beside_paper(j, "u_shape.json")).run();
+    j["planner"] = {{"type", type}};
+    const CoverageOutcome given =
+        Simulation(covsim::test::parse_beside_paper(j, "u_shape.json")).run();
+    CHECK(sensed.converged);
+    CHECK(given.converged);
+    CHECK(sensed.fingerprint != given.fingerprint);
+  }
 }
 
 TEST_CASE("metrics.csv follows the maps as they grow", "[mapping][metrics]") {

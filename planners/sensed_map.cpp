@@ -1,0 +1,244 @@
+#include "planners/sensed_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "geometry/predicates.hpp"
+
+namespace covsim {
+
+namespace {
+constexpr std::int32_t kMargin = 2;  // cells beyond the bounds
+constexpr double kMaxCells = double(1 << 24);
+}  // namespace
+
+SensedMap::SensedMap(const Box& bounds, double resolution, double tolerance, double spread)
+    : h_(resolution), tol_(tolerance), merge_(std::max(tolerance, 3.0 * spread)) {
+  if (!(resolution > 0.0)) throw std::invalid_argument("a sensed map's cells need a side > 0");
+  const Vec2 size = bounds.size();
+  const double nx = std::ceil(size.x / h_) + 2 * kMargin, ny = std::ceil(size.y / h_) + 2 * kMargin;
+  if (nx * ny > kMaxCells)
+    throw std::invalid_argument("a sensed map of more than 16777216 cells: raise the resolution");
+  nx_ = static_cast<std::int32_t>(nx);
+  ny_ = static_cast<std::int32_t>(ny);
+  origin_ = bounds.lo - Vec2{kMargin * h_, kMargin * h_};
+  wall_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0);
+  in_cell_.resize(wall_.size());
+}
+
+Vec2 SensedMap::center(std::uint32_t c) const {
+  return origin_ + Vec2{(column(c) + 0.5) * h_, (row(c) + 0.5) * h_};
+}
+
+std::uint32_t SensedMap::cell_of(Vec2 p) const {
+  const auto i =
+      std::clamp(static_cast<std::int32_t>(std::floor((p.x - origin_.x) / h_)), 0, nx_ - 1);
+  const auto j =
+      std::clamp(static_cast<std::int32_t>(std::floor((p.y - origin_.y) / h_)), 0, ny_ - 1);
+  return index(i, j);
+}
+
+bool SensedMap::covered(Vec2 a, Vec2 b) const {
+  // By the pieces held along the same line, facing the same way: the union of their
+  // stretches over a -> b.
+  const Vec2 d = b - a;
+  const double len = norm(d);
+  if (len <= tol_) return true;
+  const Vec2 e = d / len;
+  std::vector<std::pair<double, double>> spans;
+  ++query_;
+  for_each_cell(a, b, [&](std::int32_t i, std::int32_t j) {
+    if (i < 0 || j < 0 || i >= nx_ || j >= ny_) return true;
+    for (const std::uint32_t k : in_cell_[index(i, j)]) {
+      if (seen_[k] == query_) continue;
+      seen_[k] = query_;
+      const Piece& s = pieces_[k];
+      const Vec2 sd = s.b - s.a;
+      const double sl = norm(sd);
+      if (sl <= 0.0 || dot(sd, d) <= 0.0) continue;
+      if (std::fabs(cross(sd, a - s.a)) / sl > merge_ ||
+          std::fabs(cross(sd, b - s.a)) / sl > merge_)
+        continue;
+      const double t0 = dot(s.a - a, e), t1 = dot(s.b - a, e);
+      spans.emplace_back(std::min(t0, t1), std::max(t0, t1));
+    }
+    return true;
+  });
+  std::sort(spans.begin(), spans.end());
+  double reach = 0.0;
+  for (const auto& [lo, hi] : spans) {
+    if (lo > reach + merge_) return false;
+    reach = std::max(reach, hi);
+    if (reach >= len - merge_) return true;
+  }
+  return false;
+}
+
+bool SensedMap::add_wall(Vec2 a, Vec2 b) {
+  if (!is_finite(a) || !is_finite(b) || covered(a, b)) return false;
+  const auto k = static_cast<std::uint32_t>(pieces_.size());
+  pieces_.push_back(Piece{a, b});
+  seen_.push_back(0);
+  for_each_cell(a, b, [&](std::int32_t i, std::int32_t j) {
+    if (i < 0 || j < 0 || i >= nx_ || j >= ny_) return true;
+    const std::uint32_t c = index(i, j);
+    if (in_cell_[c].empty() || in_cell_[c].back() != k) in_cell_[c].push_back(k);
+    if (wall_[c] == 0) {
+      wall_[c] = 1;
+      ++wall_cells_;
+    }
+    return true;
+  });
+  return true;
+}
+
+bool SensedMap::add(const SensorReading& r) {
+  bool added = false;
+  for (const SensedPiece& p : r.visible().pieces)
+    added = add_wall(p.a, p.b) || added;
+  for (const ContactEdge& c : r.contacts)
+    added = add_wall(c.a, c.b) || added;
+  return added;
+}
+
+bool SensedMap::leaves_free(Vec2 p, Vec2 d) const {
+  // Interior to a piece: its left. At a corner where one piece ends and another begins:
+  // either's left at a convex corner of the obstacle, both at a concave one. At a lone end:
+  // round it, any way.
+  const auto left = [&](const Piece& s) { return cross(s.b - s.a, d) >= 0.0; };
+  const Piece *in = nullptr, *out = nullptr;
+  const double tol2 = tol_ * tol_;
+  bool ok = true;
+  const std::uint32_t c = cell_of(p);
+  ++query_;
+  for (std::int32_t dj = -1; dj <= 1 && ok; ++dj) {
+    for (std::int32_t di = -1; di <= 1 && ok; ++di) {
+      const std::int32_t i = column(c) + di, j = row(c) + dj;
+      if (i < 0 || j < 0 || i >= nx_ || j >= ny_) continue;
+      for (const std::uint32_t k : in_cell_[index(i, j)]) {
+        if (seen_[k] == query_) continue;
+        seen_[k] = query_;
+        const Piece& s = pieces_[k];
+        if (norm2(p - s.b) <= tol2) {
+          in = &s;
+        } else if (norm2(p - s.a) <= tol2) {
+          out = &s;
+        } else if (norm2(p - project_to_segment(p, s.a, s.b).point) <= tol2 && !left(s)) {
+          ok = false;
+          break;
+        }
+      }
+    }
+  }
+  if (!ok) return false;
+  if (in == nullptr || out == nullptr) return true;
+  if (orientation(in->a, in->b, out->b) < 0) return left(*in) || left(*out);
+  return left(*in) && left(*out);
+}
+
+double SensedMap::cell_distance2(std::int32_t i, std::int32_t j, Vec2 p) const {
+  const Vec2 lo = origin_ + Vec2{i * h_, j * h_};
+  const double dx = std::max({lo.x - p.x, 0.0, p.x - (lo.x + h_)});
+  const double dy = std::max({lo.y - p.y, 0.0, p.y - (lo.y + h_)});
+  return dx * dx + dy * dy;
+}
+
+bool SensedMap::clear(Vec2 p, Vec2 q) const {
+  if (distance(p, q) <= tol_) return true;
+  // The wall cells first (a leg that meets one far from its ends is rejected without its
+  // pieces), then the sides it leaves and reaches walls by, then the pieces it meets.
+  const double near2 = 4.0 * h_ * h_;
+  const auto far_wall = [&](std::int32_t i, std::int32_t j) {
+    const bool inside = i >= 0 && j >= 0 && i < nx_ && j < ny_;
+    return (!inside || wall_[index(i, j)] != 0) && cell_distance2(i, j, p) > near2 &&
+           cell_distance2(i, j, q) > near2;
+  };
+  if (!for_each_cell(p, q, [&](std::int32_t i, std::int32_t j) { return !far_wall(i, j); }))
+    return false;
+  if (!leaves_free(p, q - p) || !leaves_free(q, p - q)) return false;
+  const double tol2 = tol_ * tol_;
+  std::vector<std::uint32_t> met;
+  for_each_cell(p, q, [&](std::int32_t i, std::int32_t j) {
+    if (i >= 0 && j >= 0 && i < nx_ && j < ny_)
+      for (const std::uint32_t k : in_cell_[index(i, j)])
+        met.push_back(k);
+    return true;
+  });
+  std::sort(met.begin(), met.end());
+  met.erase(std::unique(met.begin(), met.end()), met.end());
+  for (const std::uint32_t k : met) {
+    const Piece& s = pieces_[k];
+    // A piece an end lies on (to rounding) is for leaves_free.
+    const auto on = [&](Vec2 e) {
+      return norm2(e - project_to_segment(e, s.a, s.b).point) <= tol2;
+    };
+    const int o1 = orientation(p, q, s.a), o2 = orientation(p, q, s.b);
+    const int o3 = orientation(s.a, s.b, p), o4 = orientation(s.a, s.b, q);
+    if (o1 * o2 < 0 && o3 * o4 < 0 && !on(p) && !on(q)) return false;  // crosses it
+    // Through one of its ends (a corner, or where two readings' pieces meet): the leg must
+    // pass on the free side there.
+    for (const Vec2 w : {s.a, s.b}) {
+      if (norm2(w - project_to_segment(w, p, q).point) > tol2 || norm2(w - p) <= tol2 ||
+          norm2(w - q) <= tol2)
+        continue;
+      if (dot(w - p, q - p) <= 0.0 || dot(w - q, p - q) <= 0.0) continue;
+      if (!leaves_free(w, p - w) || !leaves_free(w, q - w)) return false;
+    }
+  }
+  return true;
+}
+
+std::optional<std::uint32_t> SensedMap::entry(Vec2 p, std::int32_t rings) const {
+  const std::uint32_t c = cell_of(p);
+  const std::int32_t ci = column(c), cj = row(c);
+  for (std::int32_t r = 0; r <= rings; ++r) {
+    std::optional<std::uint32_t> best;
+    double least = INFINITY;
+    for (std::int32_t j = cj - r; j <= cj + r; ++j) {
+      for (std::int32_t i = ci - r; i <= ci + r; ++i) {
+        if (std::max(std::abs(i - ci), std::abs(j - cj)) != r || !free(i, j)) continue;
+        const std::uint32_t k = index(i, j);
+        const double d = distance(p, center(k));
+        if (d < least && clear(p, center(k))) {
+          least = d;
+          best = k;
+        }
+      }
+    }
+    if (best) return best;
+  }
+  return std::nullopt;
+}
+
+std::optional<SensedMap::Landing> SensedMap::closest_reachable_wall(
+    Vec2 g, const std::vector<std::uint8_t>& reachable) const {
+  std::optional<Landing> best;
+  double least = INFINITY;
+  for (const Piece& s : pieces_) {
+    const Vec2 q = project_to_segment(g, s.a, s.b).point;
+    const double d = distance(g, q);
+    if (!(d < least)) continue;
+    const std::uint32_t c = cell_of(q);
+    std::optional<std::uint32_t> from;
+    double nearest = INFINITY;
+    for (std::int32_t j = row(c) - 2; j <= row(c) + 2; ++j) {
+      for (std::int32_t i = column(c) - 2; i <= column(c) + 2; ++i) {
+        if (!free(i, j) || reachable[index(i, j)] == 0) continue;
+        const std::uint32_t k = index(i, j);
+        const double dk = distance(q, center(k));
+        if (dk < nearest && clear(center(k), q)) {
+          nearest = dk;
+          from = k;
+        }
+      }
+    }
+    if (from) {
+      least = d;
+      best = Landing{q, *from};
+    }
+  }
+  return best;
+}
+
+}  // namespace covsim

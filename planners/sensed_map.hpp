@@ -1,0 +1,130 @@
+#pragma once
+// What one robot's map planner knows of Ω when it plans on what it has sensed
+// (planner.map "sensed"): the walls its readings showed, and nothing else. Space it has not
+// seen counts as free (the freespace assumption of Stentz's D* and of navigation costmaps),
+// so a goal the map cannot reach is one Ω cannot reach either.
+//
+// The walls are kept twice: as the pieces the sensor returned (free space on their left),
+// for exact tests where a path starts or ends at a wall, and on a grid of square cells over
+// the bounding box of the robot's free space, a cell being a wall cell when a piece touches
+// its closed square. A leg of a path is clear when it crosses no piece and meets no wall cell
+// farther than two cells from its ends: paths keep half a cell off what was seen, as on the
+// given map's occupancy grid, and may still start and end on a wall.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "planners/sensor_reading.hpp"
+
+namespace covsim {
+
+class SensedMap {
+ public:
+  // Cells of side `resolution` over `bounds` grown by two cells (beyond them: walls).
+  // `tolerance` is the geometry's; `spread` how far a sensed wall point may wander between
+  // readings (range noise, a moving position estimate): a piece within max(tolerance, 3
+  // spread) of the walls already held adds nothing.
+  SensedMap(const Box& bounds, double resolution, double tolerance, double spread = 0.0);
+
+  // The walls of a reading (its visible pieces and the walls it touches); whether it showed
+  // a wall the map did not hold (a new piece, even within wall cells).
+  bool add(const SensorReading& reading);
+  // One wall piece, free space on its left (a neighbour's, say); whether it was new.
+  bool add_wall(Vec2 a, Vec2 b);
+
+  double resolution() const { return h_; }
+  std::int32_t nx() const { return nx_; }
+  std::int32_t ny() const { return ny_; }
+  std::size_t size() const { return wall_.size(); }
+  std::uint32_t index(std::int32_t i, std::int32_t j) const {
+    return static_cast<std::uint32_t>(j * nx_ + i);
+  }
+  std::int32_t column(std::uint32_t c) const { return static_cast<std::int32_t>(c) % nx_; }
+  std::int32_t row(std::uint32_t c) const { return static_cast<std::int32_t>(c) / nx_; }
+  Vec2 center(std::uint32_t c) const;
+  // The cell holding p (clamped to the grid).
+  std::uint32_t cell_of(Vec2 p) const;
+  bool free(std::int32_t i, std::int32_t j) const {
+    return i >= 0 && j >= 0 && i < nx_ && j < ny_ && wall_[index(i, j)] == 0;
+  }
+  // Grows whenever a cell becomes a wall cell.
+  std::size_t wall_cells() const { return wall_cells_; }
+
+  struct Piece {
+    Vec2 a, b;  // free space on the left of a -> b
+  };
+  const std::vector<Piece>& pieces() const { return pieces_; }
+
+  // Whether the leg p -> q is clear of what was sensed (above). At an end that lies on a
+  // piece, the leg must leave into the free side.
+  bool clear(Vec2 p, Vec2 q) const;
+  // The free cell whose centre is nearest p among those p reaches by a clear leg, searching
+  // `rings` rings of cells outward; nullopt if none.
+  std::optional<std::uint32_t> entry(Vec2 p, std::int32_t rings = 4) const;
+  // The closest point to g on the pieces that a cell of `reachable` (indexed by cell) joins
+  // by a clear leg, with that cell; nullopt if none. Where a goal no path reaches ends: the
+  // walls that cut it off were sensed whole, so the closest of them is the projection.
+  struct Landing {
+    Vec2 point;
+    std::uint32_t cell;
+  };
+  std::optional<Landing> closest_reachable_wall(Vec2 g,
+                                                const std::vector<std::uint8_t>& reachable) const;
+
+  // Calls f(i, j) for the cells a closed segment meets, in grid coordinates (outside the grid
+  // included), until f returns false; whether it never did.
+  template <class F>
+  bool for_each_cell(Vec2 a, Vec2 b, F&& f) const;
+
+ private:
+  bool covered(Vec2 a, Vec2 b) const;
+  // Whether the direction d leaves p into the free side of the pieces p lies on.
+  bool leaves_free(Vec2 p, Vec2 d) const;
+  // The squared distance from p to cell (i, j)'s closed square.
+  double cell_distance2(std::int32_t i, std::int32_t j, Vec2 p) const;
+
+  double h_, tol_, merge_;
+  Vec2 origin_;
+  std::int32_t nx_ = 0, ny_ = 0;
+  std::vector<std::uint8_t> wall_;
+  std::size_t wall_cells_ = 0;
+  std::vector<Piece> pieces_;
+  std::vector<std::vector<std::uint32_t>> in_cell_;  // the pieces touching each cell
+  mutable std::vector<std::uint32_t> seen_;          // per piece: the last query that met it
+  mutable std::uint32_t query_ = 0;
+};
+
+template <class F>
+bool SensedMap::for_each_cell(Vec2 a, Vec2 b, F&& f) const {
+  // Column by column, the rows the segment's stretch over that column spans; a segment on a
+  // cell line meets the cells on both sides (closed squares).
+  const Vec2 u = (a - origin_) / h_, v = (b - origin_) / h_;
+  const double x0 = std::min(u.x, v.x), x1 = std::max(u.x, v.x);
+  auto i0 = static_cast<std::int32_t>(std::floor(x0));
+  if (static_cast<double>(i0) == x0) --i0;
+  const auto i1 = static_cast<std::int32_t>(std::floor(x1));
+  const auto rows = [&](double y0, double y1, std::int32_t i) {
+    const double lo = std::min(y0, y1);
+    auto j0 = static_cast<std::int32_t>(std::floor(lo));
+    if (static_cast<double>(j0) == lo) --j0;
+    const auto j1 = static_cast<std::int32_t>(std::floor(std::max(y0, y1)));
+    for (std::int32_t j = j0; j <= j1; ++j)
+      if (!f(i, j)) return false;
+    return true;
+  };
+  for (std::int32_t i = i0; i <= i1; ++i) {
+    if (u.x == v.x) {
+      if (!rows(u.y, v.y, i)) return false;
+      continue;
+    }
+    const double xa = std::max(x0, static_cast<double>(i)),
+                 xb = std::min(x1, static_cast<double>(i + 1));
+    const auto y_at = [&](double x) { return u.y + (v.y - u.y) * ((x - u.x) / (v.x - u.x)); };
+    if (!rows(y_at(xa), y_at(xb), i)) return false;
+  }
+  return true;
+}
+
+}  // namespace covsim

@@ -1,0 +1,103 @@
+#include "planners/sensed_map_planner.hpp"
+
+#include "planners/grid_search.hpp"
+
+namespace covsim {
+
+namespace {
+Box grown(Box b, double by) {
+  b.lo = b.lo - Vec2{by, by};
+  b.hi = b.hi + Vec2{by, by};
+  return b;
+}
+}  // namespace
+
+SensedMapPlanner::SensedMapPlanner(const Environment& env, double resolution,
+                                   const SensorSpec& sensor)
+    : tol_(env.tolerance()),
+      map_(grown(env.bounds(), env.tolerance()), resolution, env.tolerance(), sensor.spread()) {}
+
+void SensedMapPlanner::set_goal(Vec2 goal) {
+  goal_ = goal;
+  planned_ = projecting_ = false;
+  status_ = PlanStatus::moving;
+  follower_.clear();
+}
+
+std::optional<std::vector<Vec2>> SensedMapPlanner::route(Vec2 start, Vec2 goal) {
+  if (map_.clear(start, goal)) return std::vector<Vec2>{start, goal};
+  const auto from = map_.entry(start), to = map_.entry(goal);
+  if (!from || !to) return std::nullopt;
+  return plan(start, *from, goal, *to);
+}
+
+void SensedMapPlanner::replan(Vec2 x) {
+  if (planned_) ++replans_;
+  planned_ = true;
+  if (!projecting_) {
+    if (auto path = route(x, goal_)) {
+      follower_.assign(std::move(*path));
+      arrival_ = PlanStatus::reached;
+      return;
+    }
+    projecting_ = true;
+  }
+  arrival_ = PlanStatus::projected;
+  follower_.clear();
+  status_ = PlanStatus::stalled;
+  const auto from = map_.entry(x);
+  if (!from) return;
+  const GridShape g{map_.nx(), map_.ny(), map_.resolution()};
+  const auto reach = grid_reach(
+      g, [this](std::int32_t i, std::int32_t j) { return map_.free(i, j); }, *from);
+  const auto landing = map_.closest_reachable_wall(goal_, reach);
+  if (!landing) return;
+  landing_distance_ = distance(goal_, landing->point);
+  landing_pieces_ = map_.pieces().size();
+  auto path = map_.clear(x, landing->point)
+                  ? std::optional<std::vector<Vec2>>(std::vector<Vec2>{x, landing->point})
+                  : plan(x, *from, landing->point, landing->cell);
+  if (!path) return;
+  follower_.assign(std::move(*path));
+  status_ = PlanStatus::moving;
+}
+
+bool SensedMapPlanner::nearer_wall() const {
+  if (!projecting_) return false;
+  const auto& pieces = map_.pieces();
+  for (std::size_t k = landing_pieces_; k < pieces.size(); ++k)
+    if (distance(goal_, project_to_segment(goal_, pieces[k].a, pieces[k].b).point) <
+        landing_distance_)
+      return true;
+  return false;
+}
+
+bool SensedMapPlanner::ahead_clear(Vec2 x) const {
+  const std::vector<Vec2>& p = follower_.path();
+  Vec2 from = x;
+  for (std::size_t k = follower_.next(); k < p.size(); ++k) {
+    if (!map_.clear(from, p[k])) return false;
+    from = p[k];
+  }
+  return true;
+}
+
+PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
+  const Vec2 x = r.position;
+  changed_ = map_.add(r) || changed_;
+  if (status_ != PlanStatus::moving) return PlanStep{x, status_};
+  // Walls only ever add: a path still clear stays the best the map allows, but for the way
+  // to a projection when a wall nearer the goal came into view.
+  // Stopped short of the path's end: by a wall it could not see (a contact sensor's).
+  const bool stopped = planned_ && follower_.done() && !follower_.path().empty() &&
+                       distance(x, follower_.path().back()) > tol_;
+  if (!planned_ || stopped || (changed_ && (nearer_wall() || !ahead_clear(x)))) replan(x);
+  changed_ = false;
+  if (status_ != PlanStatus::moving) return PlanStep{x, status_};
+  const Vec2 next = follower_.advance(x, max_step, tol_);
+  // The end is claimed once the last step was seen clear, or taken.
+  if (follower_.done() && distance(x, next) <= std::max(r.range, tol_)) status_ = arrival_;
+  return PlanStep{next, status_};
+}
+
+}  // namespace covsim

@@ -1,0 +1,182 @@
+// The sensed map (planners/sensed_map) and the map planners on it: what a leg may cross, where
+// it may start and end, which goals are unreachable and where they end, against hand-worked
+// cases; and that a sensed map planner depends on the sensor's range where the given map
+// does not.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "planners/planner_registry.hpp"
+#include "planners/planner_run.hpp"
+#include "planners/sensed_map.hpp"
+#include "planners/sensed_map_planner.hpp"
+#include "tests/planners/test_environments.hpp"
+
+using namespace covsim;
+
+namespace {
+// A 4 m x 2 m room with a 1 m square box in its middle.
+Environment room_with_box() {
+  return Environment({{0, 0}, {4, 0}, {4, 2}, {0, 2}},
+                     {{{1.5, 0.5}, {2.5, 0.5}, {2.5, 1.5}, {1.5, 1.5}}});
+}
+
+Box room_box() {
+  Box b;
+  b.add({0, 0});
+  b.add({4, 2});
+  return b;
+}
+
+// The box's walls as a robot below-left of it sees them (free space on the left of each).
+SensedMap box_map(double h = 0.05) {
+  SensedMap m(room_box(), h, 1e-9);
+  m.add_wall({1.5, 0.5}, {1.5, 1.5});  // west face, seen from the west: free on its left
+  m.add_wall({2.5, 0.5}, {1.5, 0.5});  // south face, free below it
+  return m;
+}
+
+Params sensed(double resolution) {
+  Params p;
+  p.set("map", std::string("sensed"));
+  p.set("resolution", resolution);
+  return p;
+}
+
+std::unique_ptr<Planner> sensed_planner(std::string_view type, const Environment& env,
+                                        double resolution) {
+  PlannerConfig c;
+  c.type = std::string(type);
+  c.params = sensed(resolution);
+  return planner_source(c, PlannerContext{env, SensorSpec{}})();
+}
+}  // namespace
+
+TEST_CASE("sensed map: a cell is a wall cell where a piece touches its closed square",
+          "[sensed_map]") {
+  SensedMap m(room_box(), 0.5, 1e-9);
+  CHECK(m.wall_cells() == 0);
+  // Along the cell line x = 1.5 (cells start at -1 with the two-cell margin): both columns.
+  m.add_wall({1.5, 0.6}, {1.5, 0.9});
+  CHECK(m.wall_cells() == 2);
+  CHECK_FALSE(m.free(m.column(m.cell_of({1.4, 0.7})), m.row(m.cell_of({1.4, 0.7}))));
+  CHECK_FALSE(m.free(m.column(m.cell_of({1.6, 0.7})), m.row(m.cell_of({1.6, 0.7}))));
+  CHECK(m.free(m.column(m.cell_of({0.7, 0.7})), m.row(m.cell_of({0.7, 0.7}))));
+  // Outside the grid counts as wall.
+  CHECK_FALSE(m.free(-1, 0));
+  CHECK_FALSE(m.free(m.nx(), 0));
+}
+
+TEST_CASE("sensed map: a piece held already adds nothing, a new stretch of it does",
+          "[sensed_map]") {
+  SensedMap m(room_box(), 0.05, 1e-9);
+  CHECK(m.add_wall({2.5, 0.5}, {1.5, 0.5}));
+  CHECK_FALSE(m.add_wall({2.2, 0.5}, {1.7, 0.5}));  // covered
+  CHECK(m.pieces().size() == 1);
+  CHECK(m.add_wall({2.8, 0.5}, {2.2, 0.5}));  // runs beyond it
+  CHECK(m.add_wall({1.6, 0.5}, {2.0, 0.5}));  // the same line, the other side free
+  CHECK(m.pieces().size() == 3);
+}
+
+TEST_CASE("sensed map: a leg may not cross a sensed wall, nor cut through a corner",
+          "[sensed_map]") {
+  const SensedMap m = box_map();
+  CHECK_FALSE(m.clear({1.0, 1.0}, {2.0, 1.0}));  // through the west face
+  CHECK_FALSE(m.clear({2.0, 0.2}, {2.0, 1.0}));  // through the south face
+  CHECK(m.clear({0.2, 0.2}, {1.2, 0.3}));        // in the open
+  // Past the corner (1.5, 0.5) outside the box, and through it into the box.
+  CHECK(m.clear({1.0, 0.0}, {2.0, 0.0}));
+  CHECK_FALSE(m.clear({1.0, 0.0}, {2.0, 1.0}));
+  // Through the box's unseen faces: unseen space is free.
+  CHECK(m.clear({3.0, 1.0}, {2.0, 1.0}));
+  CHECK(m.clear({2.0, 1.8}, {2.0, 1.0}));
+}
+
+TEST_CASE("sensed map: a leg that starts or ends on a wall leaves it on its free side",
+          "[sensed_map]") {
+  const SensedMap m = box_map();
+  const Vec2 on_west{1.5, 1.0}, on_south{2.0, 0.5};
+  CHECK(m.clear(on_west, {1.0, 1.2}));
+  CHECK_FALSE(m.clear(on_west, {1.8, 1.0}));  // into the box
+  CHECK(m.clear({2.2, 0.1}, on_south));
+  CHECK_FALSE(m.clear({2.0, 1.0}, on_south));  // from inside
+  // At the corner, a convex one of the obstacle: any way but into the box.
+  CHECK(m.clear({1.5, 0.5}, {1.0, 0.1}));
+  CHECK(m.clear({1.5, 0.5}, {2.0, 0.2}));
+  CHECK_FALSE(m.clear({1.5, 0.5}, {2.0, 1.0}));
+}
+
+TEST_CASE("sensed map: a point enters the grid by the nearest free cell it sees", "[sensed_map]") {
+  const SensedMap m = box_map(0.1);
+  const auto e = m.entry({1.5, 1.0});  // on the west face
+  REQUIRE(e);
+  CHECK(m.center(*e).x < 1.5);
+  CHECK(distance(m.center(*e), {1.5, 1.0}) < 0.25);
+}
+
+TEST_CASE("sensed map: the closest reachable wall point to a goal cut off by it", "[sensed_map]") {
+  // The box seen whole: its inside is cut off from the room; the goal (2.2, 0.9) inside is
+  // 0.3 m from the east face, 0.4 m from the south face; the closest point is (2.5, 0.9).
+  const Environment env = room_with_box();
+  SensedMap m(room_box(), 0.05, 1e-9);
+  for (std::size_t k = 0; k < env.boundary().size(); ++k)
+    m.add_wall(env.boundary()[k].a, env.boundary()[k].b);
+  std::vector<std::uint8_t> reach(m.size(), 0);
+  for (std::int32_t j = 0; j < m.ny(); ++j)
+    for (std::int32_t i = 0; i < m.nx(); ++i) {
+      const Vec2 c = m.center(m.index(i, j));
+      reach[m.index(i, j)] = m.free(i, j) && env.contains(c) ? 1 : 0;
+    }
+  const auto landing = m.closest_reachable_wall({2.2, 0.9}, reach);
+  REQUIRE(landing);
+  CHECK(landing->point.x == Approx(2.5));
+  CHECK(landing->point.y == Approx(0.9));
+}
+
+TEST_CASE("sensed map planners: reach goals in Ω, project goals in an unseen obstacle",
+          "[sensed_map]") {
+  const Environment env = room_with_box();
+  for (const char* type : {"grid_astar", "visibility_graph"}) {
+    for (double range : {0.0, 0.5, double(INFINITY)}) {
+      INFO(type << " range " << range);
+      auto planner = sensed_planner(type, env, 0.05);
+      const PlannerRun across =
+          run_planner(env, *planner, {0.5, 1.0}, {3.5, 1.0}, range, 0.02, 100000);
+      CHECK(across.status == PlanStatus::reached);
+      CHECK(distance(across.path.back(), {3.5, 1.0}) <= 1e-9);
+      for (std::size_t k = 0; k + 1 < across.path.size(); ++k)
+        REQUIRE(env.segment_inside(across.path[k], across.path[k + 1]));
+      // The way round the box is at least 2 (sqrt(1 + 0.25) + ...) longer than straight.
+      CHECK(across.length > 3.0);
+      // A goal inside the box: found unreachable once its faces are seen, and settled at the
+      // closest point of its boundary, (2.5, 0.9).
+      auto inside = sensed_planner(type, env, 0.05);
+      const PlannerRun in = run_planner(env, *inside, {0.5, 1.0}, {2.2, 0.9}, range, 0.02, 100000);
+      CHECK(in.status == PlanStatus::projected);
+      CHECK(distance(in.path.back(), {2.5, 0.9}) <= 1e-6);
+    }
+  }
+}
+
+TEST_CASE("sensed map planners: the path depends on the range, the given map's does not",
+          "[sensed_map]") {
+  // A goal inside a cup that opens away from the robot: what it sees from where it stands
+  // decides the way round, so the walks differ with the range; on the given map they do not.
+  const Environment env = test::room_with_cup();
+  const Vec2 start{3, 0.5}, goal{3, 2};
+  for (const char* type : {"grid_astar", "visibility_graph"}) {
+    INFO(type);
+    auto short_range = sensed_planner(type, env, 0.05);
+    auto long_range = sensed_planner(type, env, 0.05);
+    const PlannerRun near = run_planner(env, *short_range, start, goal, 0.3, 0.02, 100000);
+    const PlannerRun far = run_planner(env, *long_range, start, goal, INFINITY, 0.02, 100000);
+    REQUIRE(near.status == PlanStatus::reached);
+    REQUIRE(far.status == PlanStatus::reached);
+    CHECK(far.length != near.length);
+    CHECK(dynamic_cast<const SensedMapPlanner&>(*short_range).replans() > 0);
+    auto given_near = make_planner(type, env);
+    auto given_far = make_planner(type, env);
+    CHECK(run_planner(env, *given_near, start, goal, 0.3, 0.02, 100000).length ==
+          run_planner(env, *given_far, start, goal, INFINITY, 0.02, 100000).length);
+  }
+}
