@@ -53,7 +53,11 @@ PlannerEntry grid_astar_entry() {
     if (plans_on_sensed_map(p)) {
       const double h = resolution(*env, p);
       const SensorSpec sensor = ctx.sensor;
-      return [env, h, sensor] { return std::make_unique<SensedGridAStar>(*env, h, sensor); };
+      auto shared = ctx.shared_map ? sensed_map_for(*env, h, sensor) : nullptr;
+      return [env, h, sensor, shared] {
+        return std::make_unique<SensedGridAStar>(*env,
+                                                 shared ? shared : sensed_map_for(*env, h, sensor));
+      };
     }
     auto grid =
         std::make_shared<const OccupancyGrid>(ctx.environment, resolution(ctx.environment, p));

@@ -26,6 +26,8 @@ struct SensorSpec {
 struct PlannerContext {
   const Environment& environment;
   SensorSpec sensor;
+  // A centralized run: the robots' planners share what they sense (one sensed map).
+  bool shared_map = false;
 };
 
 // Builds one robot's planner.

@@ -9,8 +9,8 @@ namespace covsim {
 
 class SensedGridAStar final : public SensedMapPlanner {
  public:
-  SensedGridAStar(const Environment& env, double resolution, const SensorSpec& sensor)
-      : SensedMapPlanner(env, resolution, sensor) {}
+  SensedGridAStar(const Environment& env, std::shared_ptr<SensedMap> map)
+      : SensedMapPlanner(env, std::move(map)) {}
   std::string_view name() const override { return "grid_astar"; }
 
  private:

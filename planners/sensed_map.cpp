@@ -159,14 +159,16 @@ bool SensedMap::clear(Vec2 p, Vec2 q) const {
   if (!leaves_free(p, q - p) || !leaves_free(q, p - q)) return false;
   const double tol2 = tol_ * tol_;
   std::vector<std::uint32_t> met;
+  ++query_;
   for_each_cell(p, q, [&](std::int32_t i, std::int32_t j) {
     if (i >= 0 && j >= 0 && i < nx_ && j < ny_)
       for (const std::uint32_t k : in_cell_[index(i, j)])
-        met.push_back(k);
+        if (seen_[k] != query_) {
+          seen_[k] = query_;
+          met.push_back(k);
+        }
     return true;
   });
-  std::sort(met.begin(), met.end());
-  met.erase(std::unique(met.begin(), met.end()), met.end());
   for (const std::uint32_t k : met) {
     const Piece& s = pieces_[k];
     // A piece an end lies on (to rounding) is for leaves_free.

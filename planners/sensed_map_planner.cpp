@@ -12,10 +12,11 @@ Box grown(Box b, double by) {
 }
 }  // namespace
 
-SensedMapPlanner::SensedMapPlanner(const Environment& env, double resolution,
-                                   const SensorSpec& sensor)
-    : tol_(env.tolerance()),
-      map_(grown(env.bounds(), env.tolerance()), resolution, env.tolerance(), sensor.spread()) {}
+std::shared_ptr<SensedMap> sensed_map_for(const Environment& env, double resolution,
+                                          const SensorSpec& sensor) {
+  return std::make_shared<SensedMap>(grown(env.bounds(), env.tolerance()), resolution,
+                                     env.tolerance(), sensor.spread());
+}
 
 void SensedMapPlanner::set_goal(Vec2 goal) {
   goal_ = goal;
@@ -25,8 +26,8 @@ void SensedMapPlanner::set_goal(Vec2 goal) {
 }
 
 std::optional<std::vector<Vec2>> SensedMapPlanner::route(Vec2 start, Vec2 goal) {
-  if (map_.clear(start, goal)) return std::vector<Vec2>{start, goal};
-  const auto from = map_.entry(start), to = map_.entry(goal);
+  if (map_->clear(start, goal)) return std::vector<Vec2>{start, goal};
+  const auto from = map_->entry(start), to = map_->entry(goal);
   if (!from || !to) return std::nullopt;
   return plan(start, *from, goal, *to);
 }
@@ -45,16 +46,16 @@ void SensedMapPlanner::replan(Vec2 x) {
   arrival_ = PlanStatus::projected;
   follower_.clear();
   status_ = PlanStatus::stalled;
-  const auto from = map_.entry(x);
+  const auto from = map_->entry(x);
   if (!from) return;
-  const GridShape g{map_.nx(), map_.ny(), map_.resolution()};
+  const GridShape g{map_->nx(), map_->ny(), map_->resolution()};
   const auto reach = grid_reach(
-      g, [this](std::int32_t i, std::int32_t j) { return map_.free(i, j); }, *from);
-  const auto landing = map_.closest_reachable_wall(goal_, reach);
+      g, [this](std::int32_t i, std::int32_t j) { return map_->free(i, j); }, *from);
+  const auto landing = map_->closest_reachable_wall(goal_, reach);
   if (!landing) return;
   landing_distance_ = distance(goal_, landing->point);
-  landing_pieces_ = map_.pieces().size();
-  auto path = map_.clear(x, landing->point)
+  landing_pieces_ = map_->pieces().size();
+  auto path = map_->clear(x, landing->point)
                   ? std::optional<std::vector<Vec2>>(std::vector<Vec2>{x, landing->point})
                   : plan(x, *from, landing->point, landing->cell);
   if (!path) return;
@@ -64,7 +65,7 @@ void SensedMapPlanner::replan(Vec2 x) {
 
 bool SensedMapPlanner::nearer_wall() const {
   if (!projecting_) return false;
-  const auto& pieces = map_.pieces();
+  const auto& pieces = map_->pieces();
   for (std::size_t k = landing_pieces_; k < pieces.size(); ++k)
     if (distance(goal_, project_to_segment(goal_, pieces[k].a, pieces[k].b).point) <
         landing_distance_)
@@ -72,11 +73,18 @@ bool SensedMapPlanner::nearer_wall() const {
   return false;
 }
 
-bool SensedMapPlanner::ahead_clear(Vec2 x) const {
+bool SensedMapPlanner::ahead_clear(Vec2 x, std::size_t first_new) const {
+  // Only a leg that passes near a new piece can have lost its way (a wall cell it meets lies
+  // within a cell's diagonal of the piece).
   const std::vector<Vec2>& p = follower_.path();
+  const auto& pieces = map_->pieces();
+  const double near = 3.0 * map_->resolution();
   Vec2 from = x;
   for (std::size_t k = follower_.next(); k < p.size(); ++k) {
-    if (!map_.clear(from, p[k])) return false;
+    bool touched = false;
+    for (std::size_t n = first_new; n < pieces.size() && !touched; ++n)
+      touched = segment_distance(from, p[k], pieces[n].a, pieces[n].b) <= near;
+    if (touched && !map_->clear(from, p[k])) return false;
     from = p[k];
   }
   return true;
@@ -84,15 +92,18 @@ bool SensedMapPlanner::ahead_clear(Vec2 x) const {
 
 PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
-  changed_ = map_.add(r) || changed_;
+  map_->add(r);
+  // New walls, from this reading or (a shared map) another robot's since it last looked.
+  const std::size_t first_new = seen_pieces_;
+  const bool changed = map_->pieces().size() != first_new;
+  seen_pieces_ = map_->pieces().size();
   if (status_ != PlanStatus::moving) return PlanStep{x, status_};
   // Walls only ever add: a path still clear stays the best the map allows, but for the way
   // to a projection when a wall nearer the goal came into view.
   // Stopped short of the path's end: by a wall it could not see (a contact sensor's).
   const bool stopped = planned_ && follower_.done() && !follower_.path().empty() &&
                        distance(x, follower_.path().back()) > tol_;
-  if (!planned_ || stopped || (changed_ && (nearer_wall() || !ahead_clear(x)))) replan(x);
-  changed_ = false;
+  if (!planned_ || stopped || (changed && (nearer_wall() || !ahead_clear(x, first_new)))) replan(x);
   if (status_ != PlanStatus::moving) return PlanStep{x, status_};
   const Vec2 next = follower_.advance(x, max_step, tol_);
   // The end is claimed once the last step was seen clear, or taken.

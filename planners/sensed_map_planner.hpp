@@ -1,9 +1,10 @@
 #pragma once
-// What the map planners share on a sensed map (planner.map "sensed"): each robot's planner
-// keeps its own SensedMap of the walls its readings showed, with unseen space free, plans a
-// whole path on it when the goal changes, and plans again from scratch whenever a reading
-// adds wall cells that the rest of its path meets (full replanning on change; D* Lite would
-// repair the last search instead, for the same paths).
+// What the map planners share on a sensed map (planner.map "sensed"): a robot's planner adds
+// its readings to a SensedMap of the walls seen, with unseen space free (its own, or one the
+// robots of a centralized run share, PlannerContext::shared_map), plans a whole path on it
+// when the goal changes, and plans again from scratch whenever the map gains a wall that the
+// rest of its path meets (full replanning on change; D* Lite would repair the last search
+// instead, for the same paths).
 //
 // A goal the map cannot reach is unreachable in Ω too, since the map holds no wall Ω does
 // not: the walls that cut it off were seen whole. The robot then goes to the closest point of
@@ -11,6 +12,7 @@
 // policy `discover`), chosen again when a wall nearer the goal comes into view, and reports
 // `projected` there; no way out of where it stands reports `stalled`.
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -26,19 +28,16 @@ class SensedMapPlanner : public Planner {
  public:
   void set_goal(Vec2 goal) override;
   PlanStep step(const SensorReading& reading, double max_step) override;
-  // Walls a neighbour shared (free space on the left of a -> b).
-  void learn(Vec2 a, Vec2 b) { changed_ = map_.add_wall(a, b) || changed_; }
-
-  const SensedMap& map() const { return map_; }
+  const SensedMap& map() const { return *map_; }
   // The path being followed (from where the robot stood when it was planned), and the goal
   // it ends at (the projection once the goal was found unreachable).
   const std::vector<Vec2>& path() const { return follower_.path(); }
   std::size_t replans() const { return replans_; }
 
  protected:
-  // Cells of side `resolution` over the bounding box of `env`, the robot's free space: all
-  // the planner takes from it, besides its tolerance.
-  SensedMapPlanner(const Environment& env, double resolution, const SensorSpec& sensor);
+  // `env` is the robot's free space: the planner takes its tolerance from it, no more.
+  SensedMapPlanner(const Environment& env, std::shared_ptr<SensedMap> map)
+      : tol_(env.tolerance()), map_(std::move(map)) {}
   // A path from start to goal on the map, start first, goal last, with the free cells each
   // enters the grid by (SensedMap::entry); nullopt if there is none.
   virtual std::optional<std::vector<Vec2>> plan(Vec2 start, std::uint32_t from, Vec2 goal,
@@ -47,21 +46,28 @@ class SensedMapPlanner : public Planner {
  private:
   std::optional<std::vector<Vec2>> route(Vec2 start, Vec2 goal);
   void replan(Vec2 x);
-  // Whether the rest of the path, from x, is still clear on the map.
-  bool ahead_clear(Vec2 x) const;
+  // Whether the rest of the path, from x, is still clear on the map, which gained the pieces
+  // from `first_new` on since it was last looked at.
+  bool ahead_clear(Vec2 x, std::size_t first_new) const;
   // On the way to a projection: whether a wall that came into view since it was chosen lies
   // nearer the goal.
   bool nearer_wall() const;
 
   double tol_;
-  SensedMap map_;
+  std::shared_ptr<SensedMap> map_;
+  std::size_t seen_pieces_ = 0;  // the map's pieces when it last looked
   Vec2 goal_;
-  bool planned_ = false, projecting_ = false, changed_ = false;
+  bool planned_ = false, projecting_ = false;
   PlanStatus status_ = PlanStatus::reached, arrival_ = PlanStatus::reached;
   PathFollower follower_;
   std::size_t replans_ = 0;
   double landing_distance_ = 0.0;   // from the goal to the projection headed for
   std::size_t landing_pieces_ = 0;  // the map's pieces when it was chosen
 };
+
+// A sensed map for planners in `env`, the robot's free space: cells of side `resolution`
+// over its bounding box, the sensor's spread for merging pieces.
+std::shared_ptr<SensedMap> sensed_map_for(const Environment& env, double resolution,
+                                          const SensorSpec& sensor);
 
 }  // namespace covsim

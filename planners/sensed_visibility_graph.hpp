@@ -16,8 +16,8 @@ namespace covsim {
 
 class SensedVisibilityGraph final : public SensedMapPlanner {
  public:
-  SensedVisibilityGraph(const Environment& env, double resolution, const SensorSpec& sensor)
-      : SensedMapPlanner(env, resolution, sensor) {}
+  SensedVisibilityGraph(const Environment& env, std::shared_ptr<SensedMap> map)
+      : SensedMapPlanner(env, std::move(map)) {}
   std::string_view name() const override { return "visibility_graph"; }
 
  private:

@@ -36,7 +36,11 @@ PlannerEntry visibility_graph_entry() {
       const Environment* env = &ctx.environment;
       const double h = resolution(*env, p);
       const SensorSpec sensor = ctx.sensor;
-      return [env, h, sensor] { return std::make_unique<SensedVisibilityGraph>(*env, h, sensor); };
+      auto shared = ctx.shared_map ? sensed_map_for(*env, h, sensor) : nullptr;
+      return [env, h, sensor, shared] {
+        return std::make_unique<SensedVisibilityGraph>(
+            *env, shared ? shared : sensed_map_for(*env, h, sensor));
+      };
     }
     auto graph = std::make_shared<const VisibilityGraph>(ctx.environment);
     return [graph] { return std::make_unique<VisibilityGraphPlanner>(graph); };

@@ -40,7 +40,8 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   // they plan from (the odometry) jumps.
   sensing_ = SensorSpec{config_.sensor.noise_sigma,
                         localization_ ? localization_->odometry_jitter(step_) : 0.0};
-  // Each part of the free space has its planners' shared maps, built for the first robot in it.
+  // Each part of the free space has its planners' shared maps, built for the first robot in it
+  // (centralized, with the ideal network, one sensed map for the robots' planners too).
   std::vector<std::optional<PlannerSource>> sources(space_->part_count());
   for (std::uint32_t i = 0; i < starts.size(); ++i) {
     std::size_t part = 0;
@@ -62,8 +63,9 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
       r.planner = make_planner(i);
     } else {
       if (!sources[part])
-        sources[part] =
-            planner_source(config_.planner, PlannerContext{space_->part(part), sensing_});
+        sources[part] = planner_source(
+            config_.planner,
+            PlannerContext{space_->part(part), sensing_, config_.network.channel.is_ideal()});
       r.planner = (*sources[part])();
     }
     if (wrap) r.planner = wrap(std::move(r.planner));

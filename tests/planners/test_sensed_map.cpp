@@ -180,3 +180,22 @@ TEST_CASE("sensed map planners: the path depends on the range, the given map's d
           run_planner(env, *given_far, start, goal, INFINITY, 0.02, 100000).length);
   }
 }
+
+TEST_CASE("sensed map planners of a centralized run share one map", "[sensed_map]") {
+  const Environment env = room_with_box();
+  PlannerConfig c;
+  c.type = "grid_astar";
+  c.params = sensed(0.05);
+  for (const bool shared : {false, true}) {
+    INFO("shared " << shared);
+    const PlannerSource source = planner_source(c, PlannerContext{env, SensorSpec{}, shared});
+    auto a = source(), b = source();
+    a->set_goal({3.5, 1.0});
+    a->step(sense(env, {0.5, 1.0}, INFINITY), 0.02);
+    const auto& map_a = dynamic_cast<const SensedMapPlanner&>(*a).map();
+    const auto& map_b = dynamic_cast<const SensedMapPlanner&>(*b).map();
+    CHECK(map_a.pieces().size() > 0);
+    CHECK((&map_a == &map_b) == shared);
+    CHECK(map_b.pieces().size() == (shared ? map_a.pieces().size() : 0));
+  }
+}
