@@ -80,6 +80,7 @@ void add_plot_command(CLI::App& app) {
     const std::filesystem::path d = o->dir;
     const RunFiles run = read_run_files(d);
     if (!run.known.empty()) scene_options.known = &run.known;
+    if (!run.planner_maps.empty()) scene_options.planner_maps = &run.planner_maps;
     for (std::uint32_t id : scene_options.robots)
       if (id >= run.outcome.robots.size())
         throw InputError(fmt::format("--robots: robot {} does not exist (the run has {}: 0 to {})",

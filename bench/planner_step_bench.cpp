@@ -3,7 +3,10 @@
 // steps that follow it). Sensing is not timed: each planner's episodes are first driven
 // once to record its sensor readings, and the timed loop feeds them to a second planner
 // of the same kind (the same path the first time round; a planner with memory, such as
-// TangentBug, may decide differently later, which changes its work little).
+// TangentBug, may decide differently later, which changes its work little). A map planner
+// runs on the given map (BM_PlannerStep/<planner>) and on a sensed one
+// (BM_PlannerStep/<planner>/sensed: the walls its readings showed, replanned when they meet
+// its path), so that their ratio is measured in one run.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -23,13 +26,14 @@ struct Episode {
   std::vector<SensorReading> readings;  // one per step
 };
 
-void BM_PlannerStep(benchmark::State& state, const char* planner) {
+void BM_PlannerStep(benchmark::State& state, const char* planner, bool sensed) {
   const Scenario s = load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/office.json");
   const Environment& env = *s.environment;
   const double range = s.coverage.sensor.range;
   const double step = s.coverage.max_speed * s.coverage.loop2_period.seconds();
   PlannerConfig config;
   config.type = planner;
+  if (sensed) config.params.set("map", std::string("sensed"));
   const PlannerSource source = planner_source(config, PlannerContext{env, SensorSpec{}});
   // Goals spread over the rooms, visited one after another from the first robot's start.
   RandomStream rng(1, 0, "bench-goals");
@@ -76,8 +80,13 @@ void BM_PlannerStep(benchmark::State& state, const char* planner) {
 // BM_PlannerStep/<planner> for every registered planner: the registry is the one list of names.
 [[maybe_unused]] static const bool registered = [] {
   for (const std::string& name : planner_registry().names()) {
-    benchmark::RegisterBenchmark(("BM_PlannerStep/" + name).c_str(),
-                                 [name](benchmark::State& s) { BM_PlannerStep(s, name.c_str()); });
+    benchmark::RegisterBenchmark(("BM_PlannerStep/" + name).c_str(), [name](benchmark::State& s) {
+      BM_PlannerStep(s, name.c_str(), false);
+    });
+    if (find_param(planner_registry().at(name).params, "map") != nullptr)
+      benchmark::RegisterBenchmark(
+          ("BM_PlannerStep/" + name + "/sensed").c_str(),
+          [name](benchmark::State& s) { BM_PlannerStep(s, name.c_str(), true); });
   }
   return true;
 }();

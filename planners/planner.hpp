@@ -2,6 +2,8 @@
 // The interface every planner implements: given a goal and, at each loop-2 step, a sensor
 // reading and the longest step the robot may take, propose where to go next.
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "planners/plan_status.hpp"
 #include "planners/sensor_reading.hpp"
@@ -11,6 +13,13 @@ namespace covsim {
 struct PlanStep {
   Vec2 next;  // at most max_step from the reading's position
   PlanStatus status;
+};
+
+// What a planner plans on and its way, for figures: the walls of its map (free space on the
+// left of each) and the path it follows; empty for a planner that keeps neither.
+struct PlannerPicture {
+  std::vector<std::pair<Vec2, Vec2>> walls;
+  std::vector<Vec2> path;
 };
 
 class Planner {
@@ -27,6 +36,7 @@ class Planner {
   // Whether it keeps the robot in Ω. One that does not (the `none` baseline) is not stopped
   // at walls: a motion of it that would leave Ω ends the run, which is the failure it shows.
   virtual bool avoids_obstacles() const { return true; }
+  virtual PlannerPicture picture() const { return {}; }
 };
 
 }  // namespace covsim

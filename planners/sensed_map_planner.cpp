@@ -63,6 +63,18 @@ void SensedMapPlanner::replan(Vec2 x) {
   status_ = PlanStatus::moving;
 }
 
+PlannerPicture SensedMapPlanner::picture() const {
+  PlannerPicture out;
+  for (const SensedMap::Piece& p : map_->pieces())
+    out.walls.emplace_back(p.a, p.b);
+  // The way still ahead, from the waypoint it left last.
+  const std::vector<Vec2>& path = follower_.path();
+  const std::size_t from = follower_.next() == 0 ? 0 : follower_.next() - 1;
+  if (status_ == PlanStatus::moving && from < path.size())
+    out.path.assign(path.begin() + static_cast<std::ptrdiff_t>(from), path.end());
+  return out;
+}
+
 bool SensedMapPlanner::nearer_wall() const {
   if (!projecting_) return false;
   const auto& pieces = map_->pieces();

@@ -33,6 +33,7 @@ class SensedMapPlanner : public Planner {
   // it ends at (the projection once the goal was found unreachable).
   const std::vector<Vec2>& path() const { return follower_.path(); }
   std::size_t replans() const { return replans_; }
+  PlannerPicture picture() const override;
 
  protected:
   // `env` is the robot's free space: the planner takes its tolerance from it, no more.

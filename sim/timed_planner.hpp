@@ -25,6 +25,7 @@ class TimedPlanner final : public Planner {
   void set_goal(Vec2 goal) override { inner_->set_goal(goal); }
   void move_goal(Vec2 goal) override { inner_->move_goal(goal); }
   bool avoids_obstacles() const override { return inner_->avoids_obstacles(); }
+  PlannerPicture picture() const override { return inner_->picture(); }
   PlanStep step(const SensorReading& reading, double max_step) override {
     const auto started = std::chrono::steady_clock::now();
     const PlanStep s = inner_->step(reading, max_step);

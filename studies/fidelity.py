@@ -19,7 +19,14 @@ across scenarios (docs/scenario-format.md, convergence.spacing_tolerance). Each 
 summarised by its median and interquartile range, and by its two modes where the runs split
 into early and late ones (docs/sweeps.md); means would describe runs that never happened.
 
+A second section puts the map planners on what their robots sense (planner.map "sensed":
+grid_astar, potential_field and visibility_graph at 0.5 m, 2 m and infinite range) beside
+TangentBug at the same ranges and grid_astar on the given map, for the classic loop and a
+periodic one at 5 times the loop-2 period (Δ2 0.1 s), both projection policies; its seeds per
+scenario are --sensed-seeds (office's runs with 30 sensing robots take about ten seconds each).
+
 Usage: python3 studies/fidelity.py [--jobs N] [--seeds N] [--scenarios a,b]
+                                   [--sensed-seeds u_shape=20,office=5,...]
 The sweeps resume: a rerun into out/study-fidelity/ reuses every run already there. A sweep
 with a failed run fails the study. The prose findings live in docs/studies.md, outside the
 generated section, and are written from traced runs.
@@ -40,6 +47,10 @@ RATIOS = [1, 5, 20]
 RANGES = [0.0, 0.5, 2.0, None]
 PROJECTIONS = ["discover", "known"]
 SPACING_TOLERANCE = 0.01
+SENSED_PLANNERS = ["grid_astar", "potential_field", "visibility_graph"]
+SENSED_RANGES = [0.5, 2.0, None]
+SENSED_LOOPS = [{"mode": "classic", "loop2_period": 0.1},
+                {"mode": "periodic", "loop2_period": 0.1, "loop1_period": 0.5}]
 
 
 def loop_settings():
@@ -145,13 +156,100 @@ def markdown(table, scenario):
     return lines
 
 
+def sensed_key(row):
+    """The sensed section's column: a planner at a range, on its map."""
+    r = row["sensor.range"]
+    rng = range_label(None if r in ("", "null") or (isinstance(r, float) and math.isnan(r))
+                      else float(r))
+    if row["planner.type"] == "tangent_bug":
+        return f"TB {rng}"
+    short = {"grid_astar": "A*", "potential_field": "PF", "visibility_graph": "VG"}[row["planner.type"]]
+    return f"{short} given" if row.get("planner.map", "given") == "given" else f"{short} {rng}"
+
+
+def sensed_columns():
+    cols = [f"TB {range_label(r)}" for r in SENSED_RANGES] + ["A* given"]
+    for short in ["A*", "PF", "VG"]:
+        cols += [f"{short} {range_label(r)}" for r in SENSED_RANGES]
+    return cols
+
+
+def sensed_rows():
+    return [(loop_label(l), p) for l in SENSED_LOOPS for p in PROJECTIONS]
+
+
+def sensed_heat_map(plt, table, scenario, file):
+    rows, cols = sensed_rows(), sensed_columns()
+    grid = [[float("nan")] * len(cols) for _ in rows]
+    share = [[""] * len(cols) for _ in rows]
+    for _, row in table.iterrows():
+        i = rows.index((loop_label(row["loops"]), row["controller.projection"]))
+        j = cols.index(sensed_key(row))
+        grid[i][j] = row["time_to_1_percent_median"]
+        share[i][j] = study.percent(row, "converged_rate")
+    finite = [v for line in grid for v in line if not math.isnan(v)]
+    vmin, vmax = (min(finite), max(finite)) if finite else (0.0, 1.0)
+    fig, ax = plt.subplots(figsize=(7.6, 2.9), constrained_layout=True)
+    image = ax.imshow(grid, cmap="viridis_r", vmin=vmin, vmax=vmax, aspect="auto")
+    for i in range(len(rows)):
+        for j in range(len(cols)):
+            v = grid[i][j]
+            if not math.isnan(v):
+                ax.text(j, i, f"{v:.0f}\n{share[i][j]}", ha="center", va="center", fontsize=5.5,
+                        color="white" if v > (vmin + vmax) / 2 else "black")
+    ax.set_xticks(range(len(cols)), cols, rotation=40, ha="right", fontsize=7)
+    ax.set_yticks(range(len(rows)), [f"{l}, {p}" for l, p in rows], fontsize=7)
+    bar = fig.colorbar(image, ax=ax, shrink=0.85)
+    bar.set_label("time to 1% of final cost [s]", fontsize=7)
+    bar.ax.tick_params(labelsize=7)
+    fig.suptitle(f"{scenario}: median time to 1% of the final cost, converged share", fontsize=9)
+    study.save_svg(fig, file)
+
+
+def sensed_markdown(table, scenario, seeds):
+    lines = [f"### {scenario} ({seeds} deployments per cell)", "",
+             f"![sensed planners](studies/fidelity-sensed-{scenario}.svg)", "",
+             "| schedule | projection | planner | converged | time to 1% of the final cost [s] "
+             "| time to converge [s] | final cost H | path, all robots [m] |",
+             "|---|---|---|---:|---:|---:|---:|---:|"]
+    rows = {r: k for k, r in enumerate(sensed_rows())}
+    cols = {c: k for k, c in enumerate(sensed_columns())}
+    table = table.assign(
+        _r=table.apply(lambda r: rows[(loop_label(r["loops"]), r["controller.projection"])], axis=1),
+        _c=table.apply(lambda r: cols[sensed_key(r)], axis=1)).sort_values(["_r", "_c"])
+    for _, row in table.iterrows():
+        lines.append(
+            f"| {loop_label(row['loops'])} | {row['controller.projection']} | {sensed_key(row)} | "
+            f"{study.percent(row, 'converged_rate')} | "
+            f"{study.median_iqr(row, 'time_to_1_percent', '%.1f')} | "
+            f"{study.median_iqr(row, 'sim_time', '%.1f')} | "
+            f"{study.median_iqr(row, 'cost_real', '%.4g')} | "
+            f"{study.median_iqr(row, 'path_length', '%.3g')} |")
+    lines.append("")
+    return lines
+
+
+def same_loops(table):
+    """The rows of a summary whose loop schedule is one of SENSED_LOOPS."""
+    keep = [json.dumps(l, sort_keys=True) for l in SENSED_LOOPS]
+    return table[table["loops"].map(lambda l: json.dumps(l, sort_keys=True) in keep)]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--jobs", type=int, default=os.cpu_count())
     ap.add_argument("--seeds", type=int, default=20)
     ap.add_argument("--scenarios", default="u_shape,office,dead_ends")
+    ap.add_argument("--sensed-seeds", default="u_shape=20,office=5,dead_ends=20",
+                    help="deployments per cell of the sensed-map section, per scenario")
     args = ap.parse_args()
     scenarios = args.scenarios.split(",")
+    sensed_seeds = {}
+    for item in args.sensed_seeds.split(","):
+        name, _, count = item.partition("=")
+        if not count.isdigit() or int(count) < 1:
+            ap.error(f"--sensed-seeds: expected scenario=count, found {item!r}")
+        sensed_seeds[name] = int(count)
     for s in scenarios:
         if s not in study.DEPLOY:
             ap.error(f"--scenarios: unknown scenario {s!r} (one of {', '.join(study.DEPLOY)})")
@@ -175,6 +273,18 @@ def main():
         "modes (docs/sweeps.md), the share of runs and the median of each.",
         "",
     ]
+    sensed_section = [
+        "## Planners on what they sensed: range for every planner",
+        "",
+        "Generated by `studies/fidelity.py` (sweeps `out/study-fidelity/*-sensed`): the map",
+        "planners on the walls their robots sensed (`planner.map` \"sensed\", one map shared by",
+        "the team, as the centralized run shares everything) at 0.5 m, 2 m and infinite range,",
+        "beside TangentBug at those ranges and grid_astar on the given map (from the section",
+        "above, its deployments), for the classic loop and a periodic one at 5 times Δ2 = 0.1 s,",
+        "under both projection policies. Tolerances as above. A*: grid_astar, PF:",
+        "potential_field, VG: visibility_graph, TB: tangent_bug. Cells: median [quartiles].",
+        "",
+    ]
     for scenario in scenarios:
         deploy = {"robots": [study.DEPLOY[scenario]]}
         tangent_bug = run_sweep(f"{scenario}-tangent_bug", scenario, {
@@ -192,8 +302,23 @@ def main():
             heat_map(plt, table, scenario, measure, label, fmt,
                      FIGURES / f"fidelity-{scenario}-{measure}.svg")
         section += markdown(table, scenario)
+        seeds = sensed_seeds.get(scenario, args.seeds)
+        sensed = run_sweep(f"{scenario}-sensed", scenario, {
+            **common, **deploy, "loops": SENSED_LOOPS, "planner.type": SENSED_PLANNERS,
+            "planner.map": ["sensed"], "controller.projection": PROJECTIONS,
+            "sensor.range": SENSED_RANGES}, seeds, args.jobs).assign(**{"planner.map": "sensed"})
+        # TangentBug and the given grid at the same schedules, from the sweeps above (their
+        # seeds: --seeds).
+        given = [same_loops(tangent_bug[tangent_bug["sensor.range"].map(
+                     lambda r: r not in (0, 0.0, "0", "0.0"))]),
+                 same_loops(grid.assign(**{"planner.map": "given"}))]
+        both = pd.concat([given[0]] + [given[1].assign(**{"controller.projection": p})
+                                       for p in PROJECTIONS] + [sensed], ignore_index=True)
+        sensed_heat_map(plt, both, scenario, FIGURES / f"fidelity-sensed-{scenario}.svg")
+        sensed_section += sensed_markdown(both, scenario, seeds)
     # Each scenario's lines end with an empty one; the section does not.
     study.replace_section(study.DOCS / "studies.md", "fidelity", section[:-1])
+    study.replace_section(study.DOCS / "studies.md", "fidelity-sensed", sensed_section[:-1])
 
 
 if __name__ == "__main__":

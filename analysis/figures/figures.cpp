@@ -156,6 +156,18 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
     if (layers.has(Layer::paths)) c.polyline(rp, marks.path(col));
   }
 
+  // One robot drawn whose planner kept a map: its walls (dark orange) and its way ahead.
+  if (options.planner_maps != nullptr && options.robots.size() == 1 &&
+      options.robots[0] < options.planner_maps->size()) {
+    const PlannerPicture& p = (*options.planner_maps)[options.robots[0]];
+    for (const auto& [a, b] : p.walls)
+      c.line(view.to_px(a), view.to_px(b), marks.planner_wall());
+    std::vector<Vec2> way;
+    for (const Vec2 q : p.path)
+      way.push_back(view.to_px(q));
+    if (way.size() >= 2) c.polyline(way, marks.planner_way(robot_colour(options.robots[0])));
+  }
+
   for (std::size_t i = 0; i < state.size(); ++i) {
     if (!drawn(i)) continue;
     const RobotOutcome& r = state[i];

@@ -24,6 +24,9 @@ struct SceneOptions {
   // shaded (with the obstacles layer): to the robots together, or, with one robot drawn and
   // its own map kept (mapping.robot_maps), to it. Null or empty: Ω was known.
   const KnownCells* known = nullptr;
+  // Planners that kept maps of their own (planner.map "sensed"), per robot: with one robot
+  // drawn, the walls its planner held at the end and the way it still had ahead.
+  const std::vector<PlannerPicture>* planner_maps = nullptr;
 };
 
 // Ω with its obstacles (grey), the density as a colour map with its bar, each robot's path

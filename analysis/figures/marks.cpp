@@ -26,6 +26,12 @@ Colour Marks::projected() {
 Stroke Marks::path(Colour c) const {
   return {c, 1.6 * u};
 }
+Stroke Marks::planner_wall() const {
+  return {Colour::hex(0xd95f02), 1.6 * u};
+}
+Stroke Marks::planner_way(Colour c) const {
+  return {c, 1.2 * u, {3.0 * u, 2.0 * u}};
+}
 Stroke Marks::virtual_path(Colour c) const {
   return {Colour{c.r, c.g, c.b, 0.6}, 0.8 * u, {3.0 * u, 2.5 * u}};
 }

@@ -21,6 +21,8 @@ struct Marks {
   Stroke virtual_path(Colour c) const;  // a virtual generator's path: thin, dashed
   Stroke cells() const;
   Stroke real_cells() const;
+  Stroke planner_wall() const;         // a wall a planner's sensed map holds: dark orange
+  Stroke planner_way(Colour c) const;  // the way a planner has ahead: dashed, in its colour
   void start(Canvas& c, Vec2 p, Colour col) const;  // hollow circle
   void robot(Canvas& c, Vec2 p, Colour col) const;  // filled circle with a white rim
   // A robot with a body of `radius` px drawn to scale: a translucent disk in its colour with

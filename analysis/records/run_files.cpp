@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include <charconv>
+#include <sstream>
 #include <string_view>
 
 #include "analysis/records/result_fields.hpp"
@@ -157,9 +158,10 @@ std::vector<RobotTrack> RunFiles::tracks() const {
 bool is_record_file(const std::string& name) {
   if (name.ends_with(".partial")) return true;
   // Both trajectory names: a compressed run replaces an uncompressed one's file, and back.
-  for (std::string_view f : {std::string_view("scenario.json"), std::string_view("final.json"),
-                             trajectory_file_name(false), trajectory_file_name(true),
-                             std::string_view("metrics.csv"), std::string_view("map.csv")})
+  for (std::string_view f :
+       {std::string_view("scenario.json"), std::string_view("final.json"),
+        trajectory_file_name(false), trajectory_file_name(true), std::string_view("metrics.csv"),
+        std::string_view("map.csv"), std::string_view("planner_map.csv")})
     if (name == f) return true;
   return false;
 }
@@ -231,6 +233,45 @@ RunFiles read_run_files(const fs::path& dir) {
       for (std::size_t r = 0; r < robots; ++r)
         f.known.robots[r].push_back(v[3 + r]);
     });
+  }
+  // planner_map.csv: each robot's planner's walls and way, as it ended the run.
+  const fs::path pictures = dir / "planner_map.csv";
+  if (fs::exists(pictures)) {
+    f.planner_maps.assign(f.outcome.robots.size(), {});
+    LineReader lines(pictures);
+    std::string line;
+    lines.next(line);
+    if (line != "robot,kind,x0,y0,x1,y1")
+      throw ScenarioError(fmt::format(
+          "{}: expected the header robot,kind,x0,y0,x1,y1, found \"{}\"", pictures.string(), line));
+    for (std::size_t row = 2; lines.next(line); ++row) {
+      std::istringstream in(line);
+      std::string field[6];
+      for (std::string& s : field)
+        std::getline(in, s, ',');
+      const auto bad = [&] {
+        return ScenarioError(
+            fmt::format("{}:{}: expected robot,wall|path,x0,y0,x1,y1, found \"{}\"",
+                        pictures.string(), row, line));
+      };
+      double v[4];
+      std::uint32_t robot = 0;
+      try {
+        robot = static_cast<std::uint32_t>(std::stoul(field[0]));
+        for (int k = 0; k < 4; ++k)
+          v[k] = std::stod(field[2 + k]);
+      } catch (const std::exception&) {
+        throw bad();
+      }
+      if (robot >= f.planner_maps.size() || (field[1] != "wall" && field[1] != "path")) throw bad();
+      PlannerPicture& p = f.planner_maps[robot];
+      if (field[1] == "wall") {
+        p.walls.emplace_back(Vec2{v[0], v[1]}, Vec2{v[2], v[3]});
+      } else {
+        if (p.path.empty()) p.path.push_back({v[0], v[1]});
+        p.path.push_back({v[2], v[3]});
+      }
+    }
   }
   return f;
 }

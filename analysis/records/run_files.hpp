@@ -19,6 +19,8 @@ struct RunFiles {
   std::vector<TrajectoryRow> trajectory;
   std::vector<MetricsSample> samples;  // the cost columns of metrics.csv
   KnownCells known;                    // map.csv, when the robots mapped Ω
+  // planner_map.csv, per robot, when the planners kept maps of their own (else empty).
+  std::vector<PlannerPicture> planner_maps;
   // Each robot's track, as RunRecorder kept it.
   std::vector<RobotTrack> tracks() const;
 };
@@ -28,7 +30,8 @@ struct RunFiles {
 nlohmann::json portable_scenario(const Scenario& scenario, const std::filesystem::path& dir);
 
 // Whether a file name in a run folder is one of the run's records (scenario.json, final.json,
-// trajectory.csv or trajectory.csv.gz, metrics.csv, map.csv, or a .partial file being written): a
+// trajectory.csv or trajectory.csv.gz, metrics.csv, map.csv, planner_map.csv, or a .partial
+// file being written): a
 // new run into the folder replaces these (and the figures: is_run_output in
 // analysis/figures/figures.hpp), and keeps anything else.
 bool is_record_file(const std::string& name);

@@ -88,7 +88,10 @@ class RunRecorder final : public CoverageObserver {
   void on_sample(SimTime t, const CoverageController& c) override;
   // A last sample at the end of the run; for robots that mapped Ω, DIR/map.csv: per cell of
   // Ω's known-area lattice its centre and when the maps first held it (x, y, t; inf: never),
-  // and with mapping.robot_maps when each robot's own did (r0, r1, ...).
+  // and with mapping.robot_maps when each robot's own did (r0, r1, ...); for planners that
+  // keep a map of their own (planner.map "sensed"), DIR/planner_map.csv: each robot's
+  // planner's walls and the way it still had ahead (robot, kind "wall" or "path", x0, y0,
+  // x1, y1; free space on the left of a wall).
   void on_finish(SimTime t, const CoverageController& c) override;
   // Moves the files into place.
   void commit();
@@ -115,7 +118,7 @@ class RunRecorder final : public CoverageObserver {
   std::vector<Pending> pending_;
   MetricsSampler sampler_;
   std::filesystem::path dir_;
-  std::unique_ptr<AtomicFile> map_;
+  std::unique_ptr<AtomicFile> map_, planner_map_;
   KnownCells known_;
 };
 

@@ -32,9 +32,9 @@ struct RecordedRun {
   std::filesystem::path dir;
   RunRecorder recorder;
   CoverageOutcome outcome;
-  RecordedRun(const std::string& name, const nlohmann::json& extra)
+  RecordedRun(const std::string& name, const nlohmann::json& extra, const std::string& tag = "")
       : scenario(parsed(name, extra)),
-        dir(covsim::test::scratch_dir("unknown-area-" + name)),
+        dir(covsim::test::scratch_dir("unknown-area-" + tag + name)),
         recorder(dir, scenario.robot_positions, scenario.recording),
         outcome(run_coverage(scenario, &recorder)) {
     recorder.commit();
@@ -139,4 +139,45 @@ TEST_CASE("with robot_maps map.csv holds each robot's own map, never ahead of th
       kept.robots[2].begin(), kept.robots[2].end(), [](double t) { return t > 3.0; }));
   CHECK(count(scene_figure(s, out, recorder.tracks(), options, FigureFile{}),
               "fill-opacity:0.45") == own_unknown + 1);
+}
+
+TEST_CASE("planner_map.csv holds each sensed-map planner's walls and way, and the scene draws them",
+          "[figures][mapping]") {
+  // Centralized, the planners share one map: every robot's rows hold the same walls.
+  const RecordedRun recorded(
+      "u_shape.json",
+      {{"planner", {{"type", "grid_astar"}}}, {"mapping", {{"compare_known", false}}}},
+      "planner-map-");
+  const std::string csv = covsim::test::file_text(recorded.dir / "planner_map.csv");
+  CHECK(csv.rfind("robot,kind,x0,y0,x1,y1\n", 0) == 0);
+  const RunFiles run = recorded.read_back();
+  REQUIRE(run.planner_maps.size() == recorded.outcome.robots.size());
+  for (const PlannerPicture& p : run.planner_maps) {
+    CHECK(p.walls.size() == run.planner_maps[0].walls.size());
+    CHECK(!p.walls.empty());
+    // Every wall it holds lies on ∂Ω shrunk by nothing (points): it saw it there.
+    for (const auto& [a, b] : p.walls) {
+      const Vec2 m = 0.5 * (a + b);
+      CHECK(distance(m, recorded.scenario.environment->closest_point(m)) <= 1e-9);
+      CHECK(recorded.scenario.environment->boundary_distance(m) <= 1e-9);
+    }
+  }
+  CHECK(count(csv, ",wall,") == run.planner_maps.size() * run.planner_maps[0].walls.size());
+  // One robot drawn: its planner's walls, a line each, and its way ahead; with every robot
+  // drawn, no one planner's map.
+  const FigureFile file;  // SVG
+  const auto drawn = [&](std::vector<std::uint32_t> robots, bool maps) {
+    SceneOptions options;
+    options.robots = std::move(robots);
+    if (maps) options.planner_maps = &run.planner_maps;
+    return count(scene_figure(recorded.scenario, recorded.outcome, run.tracks(), options, file),
+                 "<path");
+  };
+  CHECK(drawn({1}, true) >= drawn({1}, false) + run.planner_maps[1].walls.size());
+  CHECK(drawn({}, true) == drawn({}, false));
+  // A run whose planners keep no map writes no such file.
+  const RecordedRun tb("u_shape.json", {{"mapping", {{"compare_known", false}}}},
+                       "no-planner-map-");
+  CHECK_FALSE(std::filesystem::exists(tb.dir / "planner_map.csv"));
+  CHECK(tb.read_back().planner_maps.empty());
 }
