@@ -10,7 +10,7 @@ ParamSpec planner_map_param() {
   return ParamSpec::choice(std::string(kPlannerMapKey), {"given", "sensed"},
                            "what it plans on: Ω itself, or the walls its robot sensed, unseen "
                            "space free (replanned when a reading meets its path)")
-      .derived("\"given\" when Ω is known (environment.known \"all\"), \"sensed\" otherwise",
+      .derived("\"given\" when Ω is known (environment.known \"full\"), \"sensed\" otherwise",
                [](const Environment&) { return ParamValue{std::string("given")}; });
 }
 

@@ -97,8 +97,15 @@ bool SensedMap::add(const SensorReading& r) {
   bool added = false;
   for (const SensedPiece& p : r.visible().pieces)
     added = add_wall(p.a, p.b) || added;
-  for (const ContactEdge& c : r.contacts)
-    added = add_wall(c.a, c.b) || added;
+  // A touch shows the wall where the robot stands, not the whole edge it lies on: a cell's
+  // side either way of the point of contact.
+  for (const ContactEdge& c : r.contacts) {
+    const double len = distance(c.a, c.b);
+    if (!(len > 0.0)) continue;
+    const double at = project_to_segment(r.position, c.a, c.b).t * len;
+    const double from = std::max(0.0, at - h_), to = std::min(len, at + h_);
+    added = add_wall(c.a + (from / len) * (c.b - c.a), c.a + (to / len) * (c.b - c.a)) || added;
+  }
   return added;
 }
 

@@ -28,8 +28,9 @@ class SensedMap {
   // spread) of the walls already held adds nothing.
   SensedMap(const Box& bounds, double resolution, double tolerance, double spread = 0.0);
 
-  // The walls of a reading (its visible pieces and the walls it touches); whether it showed
-  // a wall the map did not hold (a new piece, even within wall cells).
+  // The walls of a reading (its visible pieces, and of each wall it touches the stretch a
+  // cell's side either way of the touch); whether it showed a wall the map did not hold (a
+  // new piece, even within wall cells).
   bool add(const SensorReading& reading);
   // One wall piece, free space on its left (a neighbour's, say); whether it was new.
   bool add_wall(Vec2 a, Vec2 b);

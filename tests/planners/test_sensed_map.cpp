@@ -199,3 +199,20 @@ TEST_CASE("sensed map planners of a centralized run share one map", "[sensed_map
     CHECK(map_b.pieces().size() == (shared ? map_a.pieces().size() : 0));
   }
 }
+
+TEST_CASE("sensed map: a touch shows the wall where the robot stands, not the whole edge",
+          "[sensed_map]") {
+  // A contact sensor on the room's 4 m bottom wall learns a cell's side either way of the
+  // touch.
+  const Environment env = room_with_box();
+  SensedMap m(room_box(), 0.05, 1e-9);
+  const SensorReading touch = sense(env, {1.0, 0.0}, 0.0);
+  REQUIRE_FALSE(touch.contacts.empty());
+  CHECK(m.add(touch));
+  REQUIRE(m.pieces().size() == 1);
+  const SensedMap::Piece& p = m.pieces()[0];
+  CHECK(distance(p.a, p.b) == Approx(0.1));
+  CHECK(std::min(p.a.x, p.b.x) == Approx(0.95));
+  CHECK(p.a.y == 0.0);
+  CHECK(p.b.y == 0.0);
+}

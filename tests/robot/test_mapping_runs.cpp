@@ -227,6 +227,11 @@ TEST_CASE("map planners plan on what their robots sensed when Ω is not known",
     CHECK(sensed.converged);
     CHECK(given.converged);
     CHECK(sensed.fingerprint != given.fingerprint);
+    // Range noise beside a sensed map is refused, named where it is set.
+    j["planner"] = {{"type", type}, {"map", "sensed"}};
+    j["sensor"]["noise"] = {{"sigma", 0.01}};
+    CHECK_THROWS_WITH(covsim::test::parse_beside_paper(j, "u_shape.json"),
+                      Contains("$.sensor.noise") && Contains("sensed map"));
   }
 }
 
