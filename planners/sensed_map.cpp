@@ -198,7 +198,8 @@ bool SensedMap::clear(Vec2 p, Vec2 q) const {
   return true;
 }
 
-std::optional<std::uint32_t> SensedMap::entry(Vec2 p, std::int32_t rings) const {
+std::optional<std::uint32_t> SensedMap::entry(Vec2 p, std::int32_t rings,
+                                              const std::vector<std::uint8_t>* within) const {
   const std::uint32_t c = cell_of(p);
   const std::int32_t ci = column(c), cj = row(c);
   for (std::int32_t r = 0; r <= rings; ++r) {
@@ -208,6 +209,7 @@ std::optional<std::uint32_t> SensedMap::entry(Vec2 p, std::int32_t rings) const 
       for (std::int32_t i = ci - r; i <= ci + r; ++i) {
         if (std::max(std::abs(i - ci), std::abs(j - cj)) != r || !free(i, j)) continue;
         const std::uint32_t k = index(i, j);
+        if (within != nullptr && (*within)[k] == 0) continue;
         const double d = distance(p, center(k));
         if (d < least && clear(p, center(k))) {
           least = d;

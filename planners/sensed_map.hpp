@@ -62,8 +62,10 @@ class SensedMap {
   // piece, the leg must leave into the free side.
   bool clear(Vec2 p, Vec2 q) const;
   // The free cell whose centre is nearest p among those p reaches by a clear leg, searching
-  // `rings` rings of cells outward; nullopt if none.
-  std::optional<std::uint32_t> entry(Vec2 p, std::int32_t rings = 4) const;
+  // `rings` rings of cells outward, and only among the cells `within` marks if given;
+  // nullopt if none.
+  std::optional<std::uint32_t> entry(Vec2 p, std::int32_t rings = 4,
+                                     const std::vector<std::uint8_t>* within = nullptr) const;
   // The closest point to g on the pieces that a cell of `reachable` (indexed by cell) joins
   // by a clear leg, with that cell; nullopt if none. Where a goal no path reaches ends: the
   // walls that cut it off were sensed whole, so the closest of them is the projection.

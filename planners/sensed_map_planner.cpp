@@ -4,18 +4,12 @@
 
 namespace covsim {
 
-namespace {
-Box grown(Box b, double by) {
-  b.lo = b.lo - Vec2{by, by};
-  b.hi = b.hi + Vec2{by, by};
-  return b;
-}
-}  // namespace
-
 std::shared_ptr<SensedMap> sensed_map_for(const Environment& env, double resolution,
                                           const SensorSpec& sensor) {
-  return std::make_shared<SensedMap>(grown(env.bounds(), env.tolerance()), resolution,
-                                     env.tolerance(), sensor.spread());
+  // Cells aligned with the given map's occupancy grid (from the corner of the same box), so
+  // that a wall cell here is a blocked cell there: where the given grid joins two cells, so
+  // does the sensed one.
+  return std::make_shared<SensedMap>(env.bounds(), resolution, env.tolerance(), sensor.spread());
 }
 
 void SensedMapPlanner::set_goal(Vec2 goal) {
@@ -27,8 +21,15 @@ void SensedMapPlanner::set_goal(Vec2 goal) {
 
 std::optional<std::vector<Vec2>> SensedMapPlanner::route(Vec2 start, Vec2 goal) {
   if (map_->clear(start, goal)) return std::vector<Vec2>{start, goal};
-  const auto from = map_->entry(start), to = map_->entry(goal);
-  if (!from || !to) return std::nullopt;
+  const auto from = map_->entry(start);
+  if (!from) return std::nullopt;
+  // The goal enters by a cell the start's reaches: the nearest free cell may lie beyond a
+  // wall from it (the other side of a thin wall the goal lies on).
+  const GridShape g{map_->nx(), map_->ny(), map_->resolution()};
+  const auto reach = grid_reach(
+      g, [this](std::int32_t i, std::int32_t j) { return map_->free(i, j); }, *from);
+  const auto to = map_->entry(goal, 4, &reach);
+  if (!to) return std::nullopt;
   return plan(start, *from, goal, *to);
 }
 

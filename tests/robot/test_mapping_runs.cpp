@@ -299,3 +299,24 @@ TEST_CASE("a broadcast packs readings not yet sent in order, then older ones in 
   CHECK(m.lattice(1).common(m.lattice(0)) == m.lattice(0).count());
   CHECK(m.new_bytes_sent() < m.bytes_sent());
 }
+
+TEST_CASE("a sensed-map planner enters its goal's wall from the robot's side",
+          "[mapping][scenario]") {
+  // office, seed 5: robot 28's goal lay on the bottom face of a T's bar, next to the stem;
+  // the free cell nearest it lay beyond the stem, where the robot's cells did not reach, and
+  // the planner, entering the grid there, declared the goal unreachable (a planner failure at
+  // 201.2 s). It enters by a cell the robot's own reach.
+  nlohmann::json j = paper("office.json").json;
+  j["seed"] = 5;
+  j["robots"] = {{"count", 30},
+                 {"start", {{"region", {{0.3, 4.2}, {3.2, 4.2}, {3.2, 5.8}, {0.3, 5.8}}}}}};
+  j["controller"]["projection"] = "known";
+  j["planner"] = {{"type", "grid_astar"}, {"map", "sensed"}};
+  j["sensor"]["range"] = 2;
+  j["convergence"]["spacing_tolerance"] = 0.01;
+  j["convergence"]["position_tolerance"] = nullptr;
+  j["convergence"]["virtual_tolerance"] = nullptr;
+  const CoverageOutcome out = Simulation(covsim::test::parse_beside_paper(j, "office.json")).run();
+  CHECK(out.stop_reason == "converged");
+  CHECK(out.sim_time.seconds() > 201.2);
+}
