@@ -23,7 +23,9 @@ std::optional<std::vector<Vec2>> SensedMapPlanner::route(Vec2 start, Vec2 goal) 
   if (map_->clear(start, goal)) return std::vector<Vec2>{start, goal};
   const auto from = map_->entry(start);
   if (!from) return std::nullopt;
-  // The goal enters by a cell the start's reaches: the nearest free cell may lie beyond a
+  if (const auto to = map_->entry(goal))
+    if (auto path = plan(start, *from, goal, *to)) return path;
+  // Else the goal enters by a cell the start's reaches: the nearest free cell may lie beyond a
   // wall from it (the other side of a thin wall the goal lies on).
   const GridShape g{map_->nx(), map_->ny(), map_->resolution()};
   const auto reach = grid_reach(
