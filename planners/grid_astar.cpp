@@ -1,9 +1,6 @@
 #include "planners/grid_astar.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
-#include <queue>
 
 #include "planners/grid_search.hpp"
 #include "planners/planner_map.hpp"

@@ -24,6 +24,20 @@ struct GridShape {
   std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
 };
 
+// Calls f(n, diagonal) for each cell n one move from c: the 8 neighbours where free(i, j)
+// holds, a diagonal one only when both side cells are free too (no corner cutting).
+template <class Free, class F>
+void for_each_move(const GridShape& g, const Free& free, std::uint32_t c, F&& f) {
+  const std::int32_t ci = g.column(c), cj = g.row(c);
+  for (std::int32_t dj = -1; dj <= 1; ++dj) {
+    for (std::int32_t di = -1; di <= 1; ++di) {
+      if ((di == 0 && dj == 0) || !free(ci + di, cj + dj)) continue;
+      if (di != 0 && dj != 0 && (!free(ci + di, cj) || !free(ci, cj + dj))) continue;
+      f(g.index(ci + di, cj + dj), di != 0 && dj != 0);
+    }
+  }
+}
+
 struct GridSearch {
   std::vector<std::uint32_t> cells;  // s to t; empty if t was not reached
   std::vector<std::uint8_t> closed;  // the cells the search settled (all reachable ones if
@@ -57,20 +71,14 @@ GridSearch grid_search(const GridShape& g, const Free& free, std::uint32_t s, st
     if (out.closed[c] != 0) continue;
     out.closed[c] = 1;
     if (c == t) break;
-    const std::int32_t ci = g.column(c), cj = g.row(c);
-    for (std::int32_t dj = -1; dj <= 1; ++dj) {
-      for (std::int32_t di = -1; di <= 1; ++di) {
-        if ((di == 0 && dj == 0) || !free(ci + di, cj + dj)) continue;
-        if (di != 0 && dj != 0 && (!free(ci + di, cj) || !free(ci, cj + dj))) continue;
-        const std::uint32_t n = g.index(ci + di, cj + dj);
-        const double d = cost[c] + (di != 0 && dj != 0 ? diagonal : g.resolution);
-        if (d < cost[n]) {
-          cost[n] = d;
-          parent[n] = c;
-          open.push({d + octile(n, t), n});
-        }
+    for_each_move(g, free, c, [&](std::uint32_t n, bool diagonal_move) {
+      const double d = cost[c] + (diagonal_move ? diagonal : g.resolution);
+      if (d < cost[n]) {
+        cost[n] = d;
+        parent[n] = c;
+        open.push({d + octile(n, t), n});
       }
-    }
+    });
   }
   if (out.closed[t] == 0) return out;
   for (std::uint32_t c = t; c != kNone; c = parent[c])
@@ -89,17 +97,11 @@ std::vector<std::uint8_t> grid_reach(const GridShape& g, const Free& free, std::
   while (!todo.empty()) {
     const std::uint32_t c = todo.back();
     todo.pop_back();
-    const std::int32_t ci = g.column(c), cj = g.row(c);
-    for (std::int32_t dj = -1; dj <= 1; ++dj) {
-      for (std::int32_t di = -1; di <= 1; ++di) {
-        if ((di == 0 && dj == 0) || !free(ci + di, cj + dj)) continue;
-        if (di != 0 && dj != 0 && (!free(ci + di, cj) || !free(ci, cj + dj))) continue;
-        const std::uint32_t n = g.index(ci + di, cj + dj);
-        if (seen[n] != 0) continue;
-        seen[n] = 1;
-        todo.push_back(n);
-      }
-    }
+    for_each_move(g, free, c, [&](std::uint32_t n, bool) {
+      if (seen[n] != 0) return;
+      seen[n] = 1;
+      todo.push_back(n);
+    });
   }
   return seen;
 }

@@ -9,8 +9,7 @@ std::optional<std::vector<Vec2>> SensedGridAStar::plan(Vec2 start, std::uint32_t
                                                        std::uint32_t to) {
   const SensedMap& m = map();
   const GridSearch found = grid_search(
-      GridShape{m.nx(), m.ny(), m.resolution()},
-      [&m](std::int32_t i, std::int32_t j) { return m.free(i, j); }, from, to);
+      m.shape(), [&m](std::int32_t i, std::int32_t j) { return m.free(i, j); }, from, to);
   if (found.cells.empty()) return std::nullopt;
   std::vector<Vec2> path{start};
   for (const std::uint32_t c : found.cells)

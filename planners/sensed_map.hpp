@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "planners/grid_search.hpp"
 #include "planners/sensor_reading.hpp"
 
 namespace covsim {
@@ -39,6 +40,12 @@ class SensedMap {
   std::int32_t nx() const { return nx_; }
   std::int32_t ny() const { return ny_; }
   std::size_t size() const { return wall_.size(); }
+  GridShape shape() const { return GridShape{nx_, ny_, h_}; }
+  // The cells reachable from cell `from` over the free ones (grid_reach), 1 where reachable.
+  std::vector<std::uint8_t> reach(std::uint32_t from) const {
+    return grid_reach(
+        shape(), [this](std::int32_t i, std::int32_t j) { return free(i, j); }, from);
+  }
   std::uint32_t index(std::int32_t i, std::int32_t j) const {
     return static_cast<std::uint32_t>(j * nx_ + i);
   }

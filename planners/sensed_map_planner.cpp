@@ -1,7 +1,5 @@
 #include "planners/sensed_map_planner.hpp"
 
-#include "planners/grid_search.hpp"
-
 namespace covsim {
 
 std::shared_ptr<SensedMap> sensed_map_for(const Environment& env, double resolution,
@@ -27,9 +25,7 @@ std::optional<std::vector<Vec2>> SensedMapPlanner::route(Vec2 start, Vec2 goal) 
     if (auto path = plan(start, *from, goal, *to)) return path;
   // Else the goal enters by a cell the start's reaches: the nearest free cell may lie beyond a
   // wall from it (the other side of a thin wall the goal lies on).
-  const GridShape g{map_->nx(), map_->ny(), map_->resolution()};
-  const auto reach = grid_reach(
-      g, [this](std::int32_t i, std::int32_t j) { return map_->free(i, j); }, *from);
+  const auto reach = map_->reach(*from);
   const auto to = map_->entry(goal, 4, &reach);
   if (!to) return std::nullopt;
   return plan(start, *from, goal, *to);
@@ -51,9 +47,7 @@ void SensedMapPlanner::replan(Vec2 x) {
   status_ = PlanStatus::stalled;
   const auto from = map_->entry(x);
   if (!from) return;
-  const GridShape g{map_->nx(), map_->ny(), map_->resolution()};
-  const auto reach = grid_reach(
-      g, [this](std::int32_t i, std::int32_t j) { return map_->free(i, j); }, *from);
+  const auto reach = map_->reach(*from);
   const auto landing = map_->closest_reachable_wall(goal_, reach);
   if (!landing) return;
   landing_distance_ = distance(goal_, landing->point);

@@ -14,6 +14,7 @@
 #include "geometry/environment.hpp"
 #include "planners/planner_registry.hpp"
 #include "scenarios/obstacle_course.hpp"
+#include "tests/analysis/contract/contract_check.hpp"
 
 using namespace covsim;
 
@@ -21,17 +22,7 @@ namespace {
 constexpr std::uint64_t kPlannerSeed = 20261121;
 
 ContractSummary check(const ContractSetup& setup, std::uint64_t cases) {
-  const ContractSummary s = run_contract(setup, kPlannerSeed, 0, cases, 1);
-  std::ostringstream report;
-  report << setup.label() << ": " << s.cases << " cases, " << s.reached << " reached, "
-         << s.projected << " projected, " << s.stalled << " stalled, worst path/L* "
-         << s.worst_ratio << ", worst path/bound " << s.worst_bound_use;
-  for (const ContractResult& r : s.failed)
-    report << "\n" << r.failure << "\n  rerun: " << r.reproducer;
-  INFO(report.str());
-  CHECK(s.cases == cases);
-  CHECK(s.failures == 0);
-  return s;
+  return covsim::test::check_contract(setup, kPlannerSeed, cases);
 }
 
 ContractSetup bug(double range, double noise = 0.0) {

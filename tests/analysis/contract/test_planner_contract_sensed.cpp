@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/contract/planner_contract.hpp"
+#include "tests/analysis/contract/contract_check.hpp"
 
 using namespace covsim;
 
@@ -24,16 +25,7 @@ ContractSetup on_sensed_map(const char* planner, double range) {
 }
 
 ContractSummary check_sensed(const ContractSetup& setup, std::uint64_t cases) {
-  const ContractSummary s = run_contract(setup, kSensedSeed, 0, cases, 1);
-  std::ostringstream report;
-  report << setup.label() << ": " << s.cases << " cases, " << s.reached << " reached, "
-         << s.projected << " projected, " << s.stalled << " stalled";
-  for (const ContractResult& r : s.failed)
-    report << "\n" << r.failure << "\n  rerun: " << r.reproducer;
-  INFO(report.str());
-  CHECK(s.cases == cases);
-  CHECK(s.failures == 0);
-  return s;
+  return covsim::test::check_contract(setup, kSensedSeed, cases);
 }
 }  // namespace
 
