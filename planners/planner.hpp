@@ -37,6 +37,10 @@ class Planner {
   // at walls: a motion of it that would leave Ω ends the run, which is the failure it shows.
   virtual bool avoids_obstacles() const { return true; }
   virtual PlannerPicture picture() const { return {}; }
+  // Walls a neighbour's reading showed (free space on the left of each), when the robots
+  // share what they map: a planner that keeps a map adds them to it; one that plans from its
+  // own reading alone (TangentBug, the potential field) has nowhere to keep them.
+  virtual void learn(const std::vector<SensedPiece>& walls) { (void)walls; }
 };
 
 }  // namespace covsim

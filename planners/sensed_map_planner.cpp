@@ -99,6 +99,11 @@ bool SensedMapPlanner::ahead_clear(Vec2 x, std::size_t first_new) const {
   return true;
 }
 
+void SensedMapPlanner::learn(const std::vector<SensedPiece>& walls) {
+  for (const SensedPiece& w : walls)
+    map_->add_wall(w.a, w.b);
+}
+
 PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
   map_->add(r);

@@ -34,6 +34,8 @@ class SensedMapPlanner : public Planner {
   const std::vector<Vec2>& path() const { return follower_.path(); }
   std::size_t replans() const { return replans_; }
   PlannerPicture picture() const override;
+  // A neighbour's walls join the map; the next step replans if they block the way.
+  void learn(const std::vector<SensedPiece>& walls) override;
 
  protected:
   // `env` is the robot's free space: the planner takes its tolerance from it, no more.

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "net/receiver_grid.hpp"
+#include "planners/planner_map.hpp"
 #include "planners/planner_registry.hpp"
 #include "robot/collision_avoidance_registry.hpp"
 #include "robot/component_error.hpp"
@@ -78,6 +79,9 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
     mapping_ = std::make_unique<Mapping>(env, density, config_.radius, config_.sensor.range,
                                          config_.mapping, starts.size(), ideal);
   if (mapping_) mapping_->set_clock([this] { return kernel_.now(); });
+  // Decentralized, each robot's map planner also takes the walls of the readings it hears.
+  if (mapping_ && !ideal && plans_on_sensed_map(config_.planner.params))
+    mapping_->on_learn([this](std::uint32_t i, const Scan& s) { learn(i, s); });
   if (ideal) {
     view_ = std::make_unique<IdealView>(*state_);
   } else {
@@ -149,6 +153,25 @@ auto CoverageController::guarded(std::uint32_t i, std::string_view role, std::st
         fmt::format("robot {}'s {} \"{}\" at t = {} s", i, role, name, kernel_.now().seconds()),
         e.what()));
   }
+}
+
+void CoverageController::learn(std::uint32_t i, const Scan& scan) {
+  std::vector<SensedPiece> walls;
+  if (config_.radius == 0.0) {
+    for (const VisiblePiece& p : scan.pieces)
+      walls.push_back(SensedPiece{p.a, p.b});
+  } else {
+    // Bodies plan in Ω shrunk by their radius, whose walls the reading's walls determine: the
+    // receiver takes them as seen from where the reading was taken (the whole reading's,
+    // though a message may have carried part of it), when that lies in its part of the
+    // free space.
+    const auto k = space_->part_of(scan.origin);
+    if (!k || *k != part_[i]) return;
+    const SensorReading seen = sense(free_space(i), scan.origin, scan.range);
+    walls = seen.visible().pieces;
+  }
+  Robot& r = robots_[i];
+  guarded(i, "planner", r.planner->name(), [&] { r.planner->learn(walls); });
 }
 
 void CoverageController::loop1(std::uint32_t i) {

@@ -52,6 +52,7 @@ namespace covsim {
 
 class CoverageController;
 class Mapping;
+struct Scan;
 class ReceiverGrid;
 
 // What stopped a run at once, and where: a robot, the time, its goal and its position.
@@ -166,6 +167,8 @@ class CoverageController {
   template <class F>
   auto guarded(std::uint32_t i, std::string_view role, std::string_view name, F&& f);
   void loop1(std::uint32_t i);
+  // Robot i heard a neighbour's reading its map did not hold: its planner takes the walls.
+  void learn(std::uint32_t i, const Scan& scan);
   // What robot i knows, for a robot that maps Ω: its cells in its belief (the integrator),
   // from a partition shared per belief when it knows every generator as it is now.
   void believe(Knowledge& k, const CellIntegrator& integrator);

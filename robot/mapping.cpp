@@ -113,10 +113,10 @@ void Mapping::take(std::uint32_t i, Vec2 p, SimTime t) {
   note_merged(t);
 }
 
-void Mapping::add(std::size_t index, std::uint32_t s, SimTime t) {
+bool Mapping::add(std::size_t index, std::uint32_t s, SimTime t) {
   RobotMap& m = maps_[index];
   if (m.holds.size() <= s) m.holds.resize(scans_.size(), false);
-  if (m.holds[s]) return;
+  if (m.holds[s]) return false;
   m.holds[s] = true;
   m.order.push_back(s);
   const Scan& scan = scans_[s];
@@ -129,9 +129,10 @@ void Mapping::add(std::size_t index, std::uint32_t s, SimTime t) {
     m.filled = m.order.size();
   }
   // An obstacle is known once its last wall is seen (the belief follows in belief()).
-  if (!m.walls.add(scan)) return;
+  if (!m.walls.add(scan)) return true;
   for (std::size_t e = 0; e < elements_.size(); ++e)
     if (!m.known[e] && m.walls.seen(elements_[e])) m.known[e] = true;
+  return true;
 }
 
 void Mapping::note_merged(SimTime t) {
@@ -170,7 +171,7 @@ void Mapping::merge(std::uint32_t receiver, const MapPayload& payload) {
   if (!payload.scans) return;
   const SimTime t = now_ ? now_() : SimTime::zero();
   for (const std::uint32_t s : *payload.scans)
-    add(map_of(receiver), s, t);
+    if (add(map_of(receiver), s, t) && learned_) learned_(receiver, scans_[s]);
 }
 
 double Mapping::known_fraction() const {

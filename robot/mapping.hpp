@@ -61,6 +61,11 @@ class Mapping final : public MapExchange {
   void merge(std::uint32_t receiver, const MapPayload& payload) override;
   // The networked view merges at delivery; the time stamps the robots' own maps.
   void set_clock(std::function<SimTime()> now) { now_ = std::move(now); }
+  // Called with each reading a robot merges from a neighbour's message that its map did not
+  // hold (its map planner takes the walls too).
+  void on_learn(std::function<void(std::uint32_t receiver, const Scan&)> f) {
+    learned_ = std::move(f);
+  }
   std::uint64_t payload_limit() const override { return config_.max_bytes; }
 
   // Measures, of the cells whose centre lies in Ω (KnownLattice::of_free_space).
@@ -116,8 +121,9 @@ class Mapping final : public MapExchange {
   };
   std::size_t map_of(std::uint32_t i) const { return maps_.size() == 1 ? 0 : i; }
   void take(std::uint32_t i, Vec2 p, SimTime t);
-  // Adds scan s to map m, updating its belief if an obstacle became known.
-  void add(std::size_t m, std::uint32_t s, SimTime t);
+  // Adds scan s to map m, updating its belief if an obstacle became known; whether m did not
+  // hold it.
+  bool add(std::size_t m, std::uint32_t s, SimTime t);
   std::shared_ptr<const Belief> belief_for(const std::vector<bool>& known) const;
   void note_merged(SimTime t);
 
@@ -139,6 +145,7 @@ class Mapping final : public MapExchange {
   std::optional<SimTime> time_90_, time_100_;
   std::uint64_t bytes_sent_ = 0, new_bytes_sent_ = 0;
   std::function<SimTime()> now_;
+  std::function<void(std::uint32_t, const Scan&)> learned_;
 };
 
 }  // namespace covsim

@@ -26,6 +26,7 @@ class TimedPlanner final : public Planner {
   void move_goal(Vec2 goal) override { inner_->move_goal(goal); }
   bool avoids_obstacles() const override { return inner_->avoids_obstacles(); }
   PlannerPicture picture() const override { return inner_->picture(); }
+  void learn(const std::vector<SensedPiece>& walls) override { inner_->learn(walls); }
   PlanStep step(const SensorReading& reading, double max_step) override {
     const auto started = std::chrono::steady_clock::now();
     const PlanStep s = inner_->step(reading, max_step);

@@ -216,3 +216,32 @@ TEST_CASE("sensed map: a touch shows the wall where the robot stands, not the wh
   CHECK(p.a.y == 0.0);
   CHECK(p.b.y == 0.0);
 }
+
+TEST_CASE("sensed map planners: walls a neighbour shares reroute the path", "[sensed_map]") {
+  // Range 0: the robot's own readings show nothing ahead, so it plans straight through the
+  // box; the box's west face, heard from a neighbour, sends the path round it.
+  const Environment env = room_with_box();
+  for (const char* type : {"grid_astar", "visibility_graph"}) {
+    INFO(type);
+    auto planner = sensed_planner(type, env, 0.05);
+    planner->set_goal({3.5, 1.0});
+    const Vec2 x{0.5, 1.0};
+    planner->step(sense(env, x, 0.0), 0.02);
+    const auto& p = dynamic_cast<const SensedMapPlanner&>(*planner);
+    REQUIRE(p.path().size() == 2);  // straight to the goal
+    planner->learn({{{1.5, 0.5}, {1.5, 1.5}}, {{2.5, 0.5}, {1.5, 0.5}}});
+    CHECK(p.map().pieces().size() == 2);
+    planner->step(sense(env, x, 0.0), 0.02);
+    CHECK(p.replans() > 0);
+    const auto& path = p.path();
+    REQUIRE(path.size() > 2);
+    // Clear of the walls heard (the faces not yet seen may still be crossed: unseen space is
+    // free).
+    for (std::size_t k = 0; k + 1 < path.size(); ++k)
+      CHECK(p.map().clear(path[k], path[k + 1]));
+    CHECK_FALSE(p.map().clear(x, {3.5, 1.0}));
+    // Planners without a map have nowhere to keep them.
+    auto bug = make_planner("tangent_bug", env);
+    bug->learn({{{1.5, 0.5}, {1.5, 1.5}}});
+  }
+}

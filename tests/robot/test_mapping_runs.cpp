@@ -320,3 +320,50 @@ TEST_CASE("a sensed-map planner enters its goal's wall from the robot's side",
   CHECK(out.stop_reason == "converged");
   CHECK(out.sim_time.seconds() > 201.2);
 }
+
+TEST_CASE("decentralized, a map planner takes the walls of the readings its robot hears",
+          "[mapping][network]") {
+  // Each robot senses 0.5 m around its way; the readings it hears from the others put their
+  // walls on its planner's map too, so that, lossless, every robot's map ends with nearly every
+  // wall any reading showed.
+  const auto on_map = [](const PlannerPicture& map, Vec2 p) {
+    return std::any_of(map.walls.begin(), map.walls.end(), [&](const auto& w) {
+      return segment_distance(p, p, w.first, w.second) <= 1e-9;
+    });
+  };
+  for (const double radius : {0.0, 0.02}) {
+    INFO("radius " << radius);
+    const nlohmann::json network{{"range", 100.0}};  // every robot hears every other
+    nlohmann::json j = paper("two_obstacles.json").json;
+    j["environment"]["known"] = "none";
+    j["sensor"]["range"] = 0.5;
+    j["network"] = network;
+    j["planner"] = {{"type", "grid_astar"}};
+    j["robots"]["radius"] = radius;
+    Simulation sim(covsim::test::parse_beside_paper(j, "two_obstacles.json"));
+    const CoverageOutcome out = sim.run();
+    CHECK(out.converged);
+    CHECK(out.decentralized);
+    const auto& scans = sim.controller().mapping()->scans();
+    for (std::uint32_t i = 0; i < out.robots.size(); ++i) {
+      const PlannerPicture map = sim.controller().robots()[i].planner->picture();
+      std::size_t pieces = 0, held = 0;
+      for (const Scan& s : scans) {
+        for (const VisiblePiece& p : s.pieces) {
+          ++pieces;
+          // With bodies, the map holds the walls of Ω shrunk by the radius: one lies within
+          // the radius of the wall the reading saw.
+          const Vec2 mid = 0.5 * (p.a + p.b);
+          held +=
+              radius == 0.0
+                  ? on_map(map, mid)
+                  : std::any_of(map.walls.begin(), map.walls.end(), [&](const auto& w) {
+                      return segment_distance(mid, mid, w.first, w.second) <= radius * (1.0 + 1e-6);
+                    });
+        }
+      }
+      INFO("robot " << i << ": " << held << " of " << pieces << " pieces");
+      CHECK(static_cast<double>(held) >= 0.99 * static_cast<double>(pieces));
+    }
+  }
+}
