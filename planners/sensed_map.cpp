@@ -39,14 +39,19 @@ std::uint32_t SensedMap::cell_of(Vec2 p) const {
   return index(i, j);
 }
 
-bool SensedMap::covered(Vec2 a, Vec2 b) const {
-  // By the pieces held along the same line, facing the same way: the union of their
-  // stretches over a -> b.
+std::vector<SensedMap::Gap> SensedMap::uncovered(Vec2 a, Vec2 b) const {
+  // The pieces held along the same line, facing the same way, cover the union of their
+  // stretches over a -> b; what they leave, by more than merge_, is new.
   const Vec2 d = b - a;
   const double len = norm(d);
-  if (len <= tol_) return true;
+  if (len <= tol_) return {};
   const Vec2 e = d / len;
-  std::vector<std::pair<double, double>> spans;
+  struct Span {
+    double lo, hi;
+    std::uint32_t piece;
+    bool operator<(const Span& o) const { return lo < o.lo || (lo == o.lo && piece < o.piece); }
+  };
+  std::vector<Span> spans;
   ++query_;
   for_each_cell(a, b, [&](std::int32_t i, std::int32_t j) {
     if (i < 0 || j < 0 || i >= nx_ || j >= ny_) return true;
@@ -60,37 +65,71 @@ bool SensedMap::covered(Vec2 a, Vec2 b) const {
       if (std::fabs(cross(sd, a - s.a)) / sl > merge_ ||
           std::fabs(cross(sd, b - s.a)) / sl > merge_)
         continue;
-      const double t0 = dot(s.a - a, e), t1 = dot(s.b - a, e);
-      spans.emplace_back(std::min(t0, t1), std::max(t0, t1));
+      spans.push_back(Span{dot(s.a - a, e), dot(s.b - a, e), k});
     }
     return true;
   });
   std::sort(spans.begin(), spans.end());
-  double reach = 0.0;
-  for (const auto& [lo, hi] : spans) {
-    if (lo > reach + merge_) return false;
-    reach = std::max(reach, hi);
-    if (reach >= len - merge_) return true;
+  std::vector<Gap> gaps;
+  double reach = 0.0, held = -INFINITY;  // held: the farthest end of a piece so far
+  std::optional<std::uint32_t> by;       // the piece that ends there
+  const auto ending = [&]() { return held >= -merge_ ? by : std::nullopt; };
+  for (const Span& s : spans) {
+    if (reach >= len - merge_) break;
+    if (s.lo > reach + merge_)
+      gaps.push_back(Gap{reach, std::min(s.lo, len), ending(),
+                         s.lo <= len + merge_ ? std::optional(s.piece) : std::nullopt});
+    if (s.hi > held) {
+      held = s.hi;
+      by = s.piece;
+    }
+    reach = std::max(reach, held);
   }
-  return false;
+  if (reach < len - merge_) gaps.push_back(Gap{reach, len, ending(), std::nullopt});
+  return gaps;
 }
 
 bool SensedMap::add_wall(Vec2 a, Vec2 b) {
-  if (!is_finite(a) || !is_finite(b) || covered(a, b)) return false;
-  const auto k = static_cast<std::uint32_t>(pieces_.size());
-  pieces_.push_back(Piece{a, b});
-  seen_.push_back(0);
+  if (!is_finite(a) || !is_finite(b)) return false;
+  // Only the stretches not held yet, each joined to the piece it continues: a wall shown by
+  // many readings stays a few pieces, however its stretches came into view.
+  const auto gaps = uncovered(a, b);
+  const double len = distance(a, b);
+  for (const Gap& g : gaps) {
+    const Vec2 u = g.before        ? pieces_[*g.before].b
+                   : g.from <= 0.0 ? a
+                                   : a + (g.from / len) * (b - a);
+    const Vec2 v = g.after ? pieces_[*g.after].a : g.to >= len ? b : a + (g.to / len) * (b - a);
+    std::uint32_t k = 0;
+    if (g.before) {
+      k = *g.before;
+      pieces_[k].b = v;
+    } else if (g.after) {
+      k = *g.after;
+      pieces_[k].a = u;
+    } else {
+      k = static_cast<std::uint32_t>(pieces_.size());
+      pieces_.push_back(Piece{u, v});
+      seen_.push_back(0);
+    }
+    added_.push_back(Piece{u, v});
+    mark(u, v, k);
+  }
+  return !gaps.empty();
+}
+
+void SensedMap::mark(Vec2 a, Vec2 b, std::uint32_t k) {
   for_each_cell(a, b, [&](std::int32_t i, std::int32_t j) {
     if (i < 0 || j < 0 || i >= nx_ || j >= ny_) return true;
     const std::uint32_t c = index(i, j);
-    if (in_cell_[c].empty() || in_cell_[c].back() != k) in_cell_[c].push_back(k);
+    if (std::find(in_cell_[c].begin(), in_cell_[c].end(), k) == in_cell_[c].end())
+      in_cell_[c].push_back(k);
     if (wall_[c] == 0) {
       wall_[c] = 1;
       ++wall_cells_;
     }
     return true;
   });
-  return true;
 }
 
 bool SensedMap::add(const SensorReading& r) {

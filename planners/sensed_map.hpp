@@ -4,8 +4,9 @@
 // seen counts as free (the freespace assumption of Stentz's D* and of navigation costmaps),
 // so a goal the map cannot reach is one Ω cannot reach either.
 //
-// The walls are kept twice: as the pieces the sensor returned (free space on their left),
-// for exact tests where a path starts or ends at a wall, and on a grid of square cells over
+// The walls are kept twice: as pieces of the walls the sensor returned (free space on their
+// left; a stretch that continues a piece along its wall extends it, so pieces stay few), for
+// exact tests where a path starts or ends at a wall, and on a grid of square cells over
 // the bounding box of the robot's free space, a cell being a wall cell when a piece touches
 // its closed square. A leg of a path is clear when it crosses no piece and meets no wall cell
 // farther than two cells from its ends: paths keep half a cell off what was seen, as on the
@@ -33,7 +34,8 @@ class SensedMap {
   // cell's side either way of the touch); whether it showed a wall the map did not hold (a
   // new piece, even within wall cells).
   bool add(const SensorReading& reading);
-  // One wall piece, free space on its left (a neighbour's, say); whether it was new.
+  // One wall piece, free space on its left (a neighbour's, say), kept as the stretches of it
+  // not held yet; whether there were any.
   bool add_wall(Vec2 a, Vec2 b);
 
   double resolution() const { return h_; }
@@ -63,7 +65,11 @@ class SensedMap {
   struct Piece {
     Vec2 a, b;  // free space on the left of a -> b
   };
+  // The walls held, each a piece or a few along one wall (a stretch that continues a piece
+  // extends it).
   const std::vector<Piece>& pieces() const { return pieces_; }
+  // The stretches of wall the map gained, in order: what is new since one looked last.
+  const std::vector<Piece>& added() const { return added_; }
 
   // Whether the leg p -> q is clear of what was sensed (above). At an end that lies on a
   // piece, the leg must leave into the free side.
@@ -89,7 +95,15 @@ class SensedMap {
   bool for_each_cell(Vec2 a, Vec2 b, F&& f) const;
 
  private:
-  bool covered(Vec2 a, Vec2 b) const;
+  // A stretch of a -> b (as distances from a) that the pieces held do not cover, with the
+  // pieces that end where it starts and start where it ends, if any.
+  struct Gap {
+    double from, to;
+    std::optional<std::uint32_t> before, after;
+  };
+  std::vector<Gap> uncovered(Vec2 a, Vec2 b) const;
+  // Marks the cells a -> b meets as wall cells held by piece k.
+  void mark(Vec2 a, Vec2 b, std::uint32_t k);
   // Whether the direction d leaves p into the free side of the pieces p lies on.
   bool leaves_free(Vec2 p, Vec2 d) const;
   // The squared distance from p to cell (i, j)'s closed square.
@@ -101,6 +115,7 @@ class SensedMap {
   std::vector<std::uint8_t> wall_;
   std::size_t wall_cells_ = 0;
   std::vector<Piece> pieces_;
+  std::vector<Piece> added_;
   std::vector<std::vector<std::uint32_t>> in_cell_;  // the pieces touching each cell
   mutable std::vector<std::uint32_t> seen_;          // per piece: the last query that met it
   mutable std::uint32_t query_ = 0;

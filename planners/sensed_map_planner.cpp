@@ -51,7 +51,7 @@ void SensedMapPlanner::replan(Vec2 x) {
   const auto landing = map_->closest_reachable_wall(goal_, reach);
   if (!landing) return;
   landing_distance_ = distance(goal_, landing->point);
-  landing_pieces_ = map_->pieces().size();
+  landing_pieces_ = map_->added().size();
   auto path = map_->clear(x, landing->point)
                   ? std::optional<std::vector<Vec2>>(std::vector<Vec2>{x, landing->point})
                   : plan(x, *from, landing->point, landing->cell);
@@ -74,7 +74,7 @@ PlannerPicture SensedMapPlanner::picture() const {
 
 bool SensedMapPlanner::nearer_wall() const {
   if (!projecting_) return false;
-  const auto& pieces = map_->pieces();
+  const auto& pieces = map_->added();
   for (std::size_t k = landing_pieces_; k < pieces.size(); ++k)
     if (distance(goal_, project_to_segment(goal_, pieces[k].a, pieces[k].b).point) <
         landing_distance_)
@@ -86,7 +86,7 @@ bool SensedMapPlanner::ahead_clear(Vec2 x, std::size_t first_new) const {
   // Only a leg that passes near a new piece can have lost its way (a wall cell it meets lies
   // within a cell's diagonal of the piece).
   const std::vector<Vec2>& p = follower_.path();
-  const auto& pieces = map_->pieces();
+  const auto& pieces = map_->added();
   const double near = 3.0 * map_->resolution();
   Vec2 from = x;
   for (std::size_t k = follower_.next(); k < p.size(); ++k) {
@@ -109,8 +109,8 @@ PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
   map_->add(r);
   // New walls, from this reading or (a shared map) another robot's since it last looked.
   const std::size_t first_new = seen_pieces_;
-  const bool changed = map_->pieces().size() != first_new;
-  seen_pieces_ = map_->pieces().size();
+  const bool changed = map_->added().size() != first_new;
+  seen_pieces_ = map_->added().size();
   if (status_ != PlanStatus::moving) return PlanStep{x, status_};
   // Walls only ever add: a path still clear stays the best the map allows, but for the way
   // to a projection when a wall nearer the goal came into view.

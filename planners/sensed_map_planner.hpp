@@ -50,7 +50,7 @@ class SensedMapPlanner : public Planner {
   std::optional<std::vector<Vec2>> route(Vec2 start, Vec2 goal);
   void replan(Vec2 x);
   // Whether the rest of the path, from x, is still clear on the map, which gained the pieces
-  // from `first_new` on since it was last looked at.
+  // stretches from `first_new` on (SensedMap::added) since it was last looked at.
   bool ahead_clear(Vec2 x, std::size_t first_new) const;
   // On the way to a projection: whether a wall that came into view since it was chosen lies
   // nearer the goal.
@@ -58,14 +58,14 @@ class SensedMapPlanner : public Planner {
 
   double tol_;
   std::shared_ptr<SensedMap> map_;
-  std::size_t seen_pieces_ = 0;  // the map's pieces when it last looked
+  std::size_t seen_pieces_ = 0;  // the map's added stretches when it last looked
   Vec2 goal_;
   bool planned_ = false, projecting_ = false;
   PlanStatus status_ = PlanStatus::reached, arrival_ = PlanStatus::reached;
   PathFollower follower_;
   std::size_t replans_ = 0;
   double landing_distance_ = 0.0;   // from the goal to the projection headed for
-  std::size_t landing_pieces_ = 0;  // the map's pieces when it was chosen
+  std::size_t landing_pieces_ = 0;  // the map's added stretches when it was chosen
 };
 
 // A sensed map for planners in `env`, the robot's free space: cells of side `resolution`

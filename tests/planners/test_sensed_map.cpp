@@ -73,9 +73,31 @@ TEST_CASE("sensed map: a piece held already adds nothing, a new stretch of it do
   CHECK(m.add_wall({2.5, 0.5}, {1.5, 0.5}));
   CHECK_FALSE(m.add_wall({2.2, 0.5}, {1.7, 0.5}));  // covered
   CHECK(m.pieces().size() == 1);
-  CHECK(m.add_wall({2.8, 0.5}, {2.2, 0.5}));  // runs beyond it
+  CHECK(m.add_wall({2.8, 0.5}, {2.2, 0.5}));  // runs beyond it: extends it
+  REQUIRE(m.pieces().size() == 1);
+  CHECK(m.pieces()[0].a == Vec2{2.8, 0.5});
+  CHECK(m.pieces()[0].b == Vec2{1.5, 0.5});
   CHECK(m.add_wall({1.6, 0.5}, {2.0, 0.5}));  // the same line, the other side free
-  CHECK(m.pieces().size() == 3);
+  CHECK(m.pieces().size() == 2);
+  // What was new each time, in order.
+  REQUIRE(m.added().size() == 3);
+  CHECK(m.added()[1].a == Vec2{2.8, 0.5});
+  CHECK(m.added()[1].b == Vec2{2.5, 0.5});
+  // A stretch between two pieces of one wall joins the first to the second's start; one
+  // apart from both is a piece of its own.
+  SensedMap w(room_box(), 0.05, 1e-9);
+  CHECK(w.add_wall({0.5, 1.0}, {1.0, 1.0}));
+  CHECK(w.add_wall({2.0, 1.0}, {3.0, 1.0}));
+  CHECK(w.add_wall({0.8, 1.0}, {2.5, 1.0}));
+  REQUIRE(w.pieces().size() == 2);
+  CHECK(w.pieces()[0].b == Vec2{2.0, 1.0});
+  CHECK(w.added().back().a == Vec2{1.0, 1.0});
+  CHECK(w.added().back().b == Vec2{2.0, 1.0});
+  CHECK(w.add_wall({3.2, 1.0}, {3.5, 1.0}));
+  CHECK(w.pieces().size() == 3);
+  // Every point of the stretches seen is on a wall cell.
+  for (double x = 0.5; x <= 3.0; x += 0.01)
+    CHECK_FALSE(w.free(w.column(w.cell_of({x, 1.0})), w.row(w.cell_of({x, 1.0}))));
 }
 
 TEST_CASE("sensed map: a leg may not cross a sensed wall, nor cut through a corner",
