@@ -57,7 +57,9 @@ void add_plot_command(CLI::App& app) {
   o->figures.add_to(cmd, "scene, cost");
   cmd->add_option("--title", o->title, "The scene's title (default: scenario name and outcome)");
   cmd->add_option("--time-window", o->window, "T0,T1: draw the paths between T0 and T1 s");
-  cmd->add_option("--robots", o->robots, "I,J,...: draw only these robots' paths and marks");
+  cmd->add_option("--robots", o->robots,
+                  "I,J,...: draw only these robots' paths and marks; one robot: its planner's "
+                  "map and way too (scene, video, and shown first in replay.html)");
   cmd->add_flag("--log-cost", o->log_cost, "The cost figure on a log scale");
   cmd->add_option("--frames", o->frames, "Most frames in replay.html")
       ->check(CLI::Range(std::size_t{2}, std::size_t{1000000}))
@@ -90,12 +92,18 @@ void add_plot_command(CLI::App& app) {
     AtomicFile scene(d / ("scene." + ext)), cost(d / ("cost." + ext)), replay(d / "replay.html");
     scene.stream() << scene_figure(run.scenario, run.outcome, run.tracks(), scene_options, file);
     cost.stream() << cost_figure(run.samples, run.outcome, o->log_cost, file);
-    replay.stream() << replay_html(run, o->frames);
+    replay.stream() << replay_html(
+        run, o->frames,
+        scene_options.robots.size() == 1 ? std::optional(scene_options.robots[0]) : std::nullopt);
     const std::string& video = o->figures.video;
     if (!video.empty()) {
       try {
         VideoOptions settings = o->figures.video_settings();
         if (!run.known.empty()) settings.known = &run.known;
+        if (!run.planner_maps.empty() && scene_options.robots.size() == 1) {
+          settings.planner_maps = &run.planner_maps;
+          settings.planner_robot = scene_options.robots[0];
+        }
         write_run_video(run.scenario, run.outcome, run.tracks(), video, settings);
       } catch (const std::runtime_error& e) {
         throw InputError(fmt::format("--video: {}", e.what()));

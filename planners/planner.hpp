@@ -20,6 +20,8 @@ struct PlanStep {
 struct PlannerPicture {
   std::vector<std::pair<Vec2, Vec2>> walls;
   std::vector<Vec2> path;
+  // The map the walls are of (planners that share one give the same); null without a map.
+  const void* map = nullptr;
 };
 
 class Planner {

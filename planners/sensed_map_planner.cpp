@@ -62,6 +62,7 @@ void SensedMapPlanner::replan(Vec2 x) {
 
 PlannerPicture SensedMapPlanner::picture() const {
   PlannerPicture out;
+  out.map = map_.get();
   for (const SensedMap::Piece& p : map_->pieces())
     out.walls.emplace_back(p.a, p.b);
   // The way still ahead, from the waypoint it left last.

@@ -9,6 +9,7 @@
 
 #include "analysis/figures/line_chart.hpp"
 #include "analysis/figures/map_legend.hpp"
+#include "analysis/figures/planner_map_view.hpp"
 #include "analysis/figures/robot_palette.hpp"
 #include "analysis/figures/unknown_area.hpp"
 #include "analysis/records/measure.hpp"
@@ -49,6 +50,8 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
   };
   const double t0 = options.time_window ? options.time_window->first : -INFINITY;
   const double t1 = options.time_window ? options.time_window->second : INFINITY;
+  const bool planner_map = options.planner_maps != nullptr && !options.planner_maps->empty() &&
+                           options.robots.size() == 1;
   // Where each robot stands at the figure's time: the run's end, or the window's.
   std::vector<RobotOutcome> state = outcome.robots;
   if (options.time_window)
@@ -91,7 +94,8 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
   const double bar = layers.has(Layer::density) ? view.colour_bar_width(f) : 0;
   const Legend legend =
       layers.has(Layer::legend)
-          ? map_legend(layers, marks, view, f, options.known != nullptr && !options.known->empty())
+          ? map_legend(layers, marks, view, f, options.known != nullptr && !options.known->empty(),
+                       planner_map)
           : Legend({}, f);
   const double aspect = MapView::aspect(scenario);
   const bool beside = file.size.height > 0;
@@ -157,15 +161,11 @@ std::string scene_figure(const Scenario& scenario, const CoverageOutcome& outcom
   }
 
   // One robot drawn whose planner kept a map: its walls (dark orange) and its way ahead.
-  if (options.planner_maps != nullptr && options.robots.size() == 1 &&
-      options.robots[0] < options.planner_maps->size()) {
-    const PlannerPicture& p = (*options.planner_maps)[options.robots[0]];
-    for (const auto& [a, b] : p.walls)
-      c.line(view.to_px(a), view.to_px(b), marks.planner_wall());
-    std::vector<Vec2> way;
-    for (const Vec2 q : p.path)
-      way.push_back(view.to_px(q));
-    if (way.size() >= 2) c.polyline(way, marks.planner_way(robot_colour(options.robots[0])));
+  if (planner_map) {
+    const std::uint32_t robot = options.robots[0];
+    const PlannerPicture p =
+        options.planner_maps->at(robot, std::isfinite(t1) ? t1 : outcome.sim_time.seconds());
+    draw_planner_map(c, view, marks, p, robot_colour(robot));
   }
 
   for (std::size_t i = 0; i < state.size(); ++i) {

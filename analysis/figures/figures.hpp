@@ -9,6 +9,7 @@
 #include "analysis/figures/canvas.hpp"
 #include "analysis/figures/layers.hpp"
 #include "analysis/records/known_cells.hpp"
+#include "analysis/records/planner_map_record.hpp"
 #include "analysis/records/robot_track.hpp"
 #include "sim/coverage_run.hpp"
 #include "sim/metrics_sample.hpp"
@@ -24,9 +25,10 @@ struct SceneOptions {
   // shaded (with the obstacles layer): to the robots together, or, with one robot drawn and
   // its own map kept (mapping.robot_maps), to it. Null or empty: Ω was known.
   const KnownCells* known = nullptr;
-  // Planners that kept maps of their own (planner.map "sensed"), per robot: with one robot
-  // drawn, the walls its planner held at the end and the way it still had ahead.
-  const std::vector<PlannerPicture>* planner_maps = nullptr;
+  // Planners that kept maps of their own (planner.map "sensed"): with one robot drawn, the
+  // walls its planner held and the way it had ahead at the figure's time (the end of the
+  // run or of the time window).
+  const PlannerMapRecord* planner_maps = nullptr;
 };
 
 // Ω with its obstacles (grey), the density as a colour map with its bar, each robot's path

@@ -7,7 +7,7 @@
 namespace covsim {
 
 Legend map_legend(const Layers& layers, const Marks& m, const MapView& view, double font,
-                  bool unknown_area) {
+                  bool unknown_area, bool planner_map) {
   std::vector<LegendEntry> e;
   const Vec2 half{0.9 * font, 0};
   const auto line = [half](Stroke s) {
@@ -46,6 +46,10 @@ Legend map_legend(const Layers& layers, const Marks& m, const MapView& view, dou
                    c.rectangle(p - half - Vec2{0, 0.4 * half.x}, p + half + Vec2{0, 0.4 * half.x},
                                Marks::unknown());
                  }});
+  if (planner_map) {
+    e.push_back({"walls the planner's map held", line(m.planner_wall())});
+    e.push_back({"the planner's way ahead", line(m.planner_way(first))});
+  }
   if (layers.has(Layer::density))
     e.push_back({view.uniform() ? "uniform density φ" : "density φ",
                  [&view, font](Canvas& c, Vec2 p) { view.draw_density_swatch(c, p, font); }});

@@ -89,7 +89,8 @@ std::string density_png(const Scenario& scenario) {
 
 // The data as a JavaScript object literal: rings, bounds, and frames of
 // [x, y, vx, vy, tx, ty, rx, ry] per robot.
-std::string data_literal(const RunFiles& run, std::size_t max_frames) {
+std::string data_literal(const RunFiles& run, std::size_t max_frames,
+                         std::optional<std::uint32_t> planner_robot) {
   const Environment& env = *run.scenario.environment;
   const std::size_t n = run.outcome.robots.size();
   // Group rows into frames by time (rows come in time order).
@@ -136,6 +137,27 @@ std::string data_literal(const RunFiles& run, std::size_t max_frames) {
     const KnownCell& c = run.known.cells[k];
     fmt::format_to(std::back_inserter(out), "{}{},{},{}", k > 0 ? "," : "", c.centre.x, c.centre.y,
                    std::isinf(c.since) ? -1.0 : c.since);
+  }
+  out += "]}";
+  // Planners with maps of their own: walls as [t, robot (-1: shared), x0, y0, x1, y1] and
+  // ways as [t, robot, [x, y, ...]], in time order.
+  const PlannerMapRecord& pm = run.planner_maps;
+  fmt::format_to(std::back_inserter(out), ",\"planner\":{{\"robot\":{},\"walls\":[",
+                 planner_robot && !pm.empty() ? static_cast<long>(*planner_robot) : -1L);
+  for (std::size_t k = 0; k < pm.walls.size(); ++k) {
+    const auto& w = pm.walls[k];
+    fmt::format_to(std::back_inserter(out), "{}{:.7g},{},{:.7g},{:.7g},{:.7g},{:.7g}",
+                   k > 0 ? "," : "", w.t, w.robot ? static_cast<long>(*w.robot) : -1L, w.a.x, w.a.y,
+                   w.b.x, w.b.y);
+  }
+  out += "],\"ways\":[";
+  for (std::size_t k = 0; k < pm.ways.size(); ++k) {
+    const auto& w = pm.ways[k];
+    fmt::format_to(std::back_inserter(out), "{}[{:.7g},{},[", k > 0 ? "," : "", w.t, w.robot);
+    for (std::size_t j = 0; j < w.points.size(); ++j)
+      fmt::format_to(std::back_inserter(out), "{}{:.7g},{:.7g}", j > 0 ? "," : "", w.points[j].x,
+                     w.points[j].y);
+    out += "]]";
   }
   out += "]}";
   out += ",\"times\":[";
@@ -200,6 +222,7 @@ aside > * { margin: 0 0 10px 0; }
 <label>speed <select id="speed"><option>0.25</option><option>0.5</option><option selected>1</option>
 <option>2</option><option>4</option><option>8</option></select>×</label>
 <input id="slider" type="range" min="0" value="0"><span id="time"></span>
+<label id="plannerBox" hidden>planner map of <select id="plannerRobot"><option value="-1">no robot</option></select></label>
 <button id="png" title="download the frame as PNG">frame as PNG</button></div>
 <main id="main"><div id="mapBox"><canvas id="view"></canvas></div>
 <aside id="side"><canvas id="cost"></canvas><canvas id="key"></canvas>
@@ -217,6 +240,16 @@ const costCanvas = $("cost"), cctx = costCanvas.getContext("2d");
 const keyCanvas = $("key"), kctx = keyCanvas.getContext("2d");
 const statusBox = $("status"), timeLabel = $("time");
 const INK = "#222222", OBSTACLE = "#4a4a4a", CELLS = "#1f5fbf", PROJECTED = "#ffd21f", UNKNOWN = "rgba(107, 122, 153, 0.45)";
+const PLANNER_WALL = "#d95f02";
+// Planners with maps of their own: a menu of the robots whose map can be shown.
+const plannerMaps = D.planner.walls.length > 0 || D.planner.ways.length > 0;
+const plannerRobot = $("plannerRobot");
+if (plannerMaps) {
+  for (let i = 0; i < D.robots; i++) { const o = document.createElement("option"); o.value = String(i); o.textContent = "robot " + i; plannerRobot.appendChild(o); }
+  plannerRobot.value = String(D.planner.robot);
+  $("plannerBox").hidden = false;
+}
+let drawnPlannerWalls = 0, drawnPlannerWay = 0;
 const FONT = "12px 'DejaVu Sans', sans-serif";
 $("subtitle").textContent = D.robots + (D.robots === 1 ? " robot, " : " robots, ") + D.frames.length + " frames to t = " +
   D.times[D.times.length - 1].toFixed(1) + " s";
@@ -320,6 +353,8 @@ const mark = {
   target(g, x, y) { g.strokeStyle = INK; g.lineWidth = 1.5; cross(g, x, y, 4.5); },
   projected(g, x, y) { g.strokeStyle = "#000"; g.lineWidth = 4; cross(g, x, y, 6.5); g.strokeStyle = PROJECTED; g.lineWidth = 2; cross(g, x, y, 6.5); },
   cells(g, x0, y, x1) { g.strokeStyle = CELLS; g.lineWidth = 1.3; g.beginPath(); g.moveTo(x0, y); g.lineTo(x1, y); g.stroke(); },
+  plannerWall(g, x0, y0, x1, y1) { g.strokeStyle = PLANNER_WALL; g.lineWidth = 1.8; g.setLineDash([]); g.beginPath(); g.moveTo(x0, y0); g.lineTo(x1, y1); g.stroke(); },
+  plannerWay(g, points, colour) { g.strokeStyle = colour; g.lineWidth = 1.4; g.setLineDash([4, 3]); g.beginPath(); points.forEach((p, k) => k === 0 ? g.moveTo(p[0], p[1]) : g.lineTo(p[0], p[1])); g.stroke(); g.setLineDash([]); },
 };
 const keyRows = [
   ["robot path (colour per robot)", (g, x, y) => [0, 1, 2].forEach(k => mark.path(g, x - 11 + 8 * k, y, x - 5 + 8 * k, D.key_colours[k]))],
@@ -330,6 +365,8 @@ const keyRows = [
   ["projected target", (g, x, y) => mark.projected(g, x, y)],
   ["virtual partition", (g, x, y) => mark.cells(g, x - 11, y, x + 11)],
   ["obstacle", (g, x, y) => { g.fillStyle = OBSTACLE; g.fillRect(x - 10, y - 6, 20, 12); }],
+  ...(plannerMaps ? [["walls the planner's map held", (g, x, y) => mark.plannerWall(g, x - 11, y, x + 11, y)],
+                     ["the planner's way ahead", (g, x, y) => mark.plannerWay(g, [[x - 11, y], [x + 11, y]], D.key_colours[0])]] : []),
   [D.density ? "density φ (darker: higher)" : "uniform density φ", (g, x, y) => {
     if (densityImage && densityImage.complete && densityImage.naturalWidth > 0) g.drawImage(densityImage, x - 10, y - 6, 20, 12);
     else { g.fillStyle = "#fff"; g.fillRect(x - 10, y - 6, 20, 12); }
@@ -442,6 +479,21 @@ function draw(f) {
     const s = robot(0, i);
     mark.start(ctx, X(s[0]), Y(s[1]), D.colours[i]);
   }
+  // The chosen robot's planner: the walls its map held by now and the way it had ahead.
+  drawnPlannerWalls = 0; drawnPlannerWay = 0;
+  const sel = plannerMaps ? Number(plannerRobot.value) : -1;
+  if (sel >= 0) {
+    const w = D.planner.walls, now = D.times[f];
+    for (let k = 0; k < w.length && w[k] <= now; k += 6)
+      if (w[k + 1] === -1 || w[k + 1] === sel) { mark.plannerWall(ctx, X(w[k + 2]), Y(w[k + 3]), X(w[k + 4]), Y(w[k + 5])); drawnPlannerWalls++; }
+    let way = null;
+    for (const [t, r, pts] of D.planner.ways) { if (t > now) break; if (r === sel) way = pts; }
+    if (way && way.length >= 4) {
+      const pts = [];
+      for (let k = 0; k < way.length; k += 2) pts.push([X(way[k]), Y(way[k + 1])]);
+      mark.plannerWay(ctx, pts, D.colours[sel]); drawnPlannerWay = pts.length - 1;
+    }
+  }
   ctx.font = FONT; ctx.textAlign = "left"; ctx.textBaseline = "alphabetic";
   for (let i = 0; i < D.robots; i++) {
     const r = robot(f, i);
@@ -480,10 +532,12 @@ function show(f) { draw(Math.max(0, Math.min(D.frames.length - 1, f))); remember
 function report(extra) {
   statusBox.textContent = errors.length > 0 ? "errors: " + errors.join("; ")
     : "selftest ok: frame " + shownFrame + " of " + D.frames.length + ", t=" + D.times[shownFrame] +
-      ", robots " + drawnRobots + ", cells " + drawnCells + ", cost cursor t=" + cursorTime + (extra || "");
+      ", robots " + drawnRobots + ", cells " + drawnCells + ", cost cursor t=" + cursorTime +
+      (plannerMaps ? ", planner map of robot " + plannerRobot.value + ": walls " + drawnPlannerWalls + ", way legs " + drawnPlannerWay : "") + (extra || "");
 }
 const step = d => { stop(); show(shownFrame + d); };
 slider.addEventListener("input", () => show(Number(slider.value)));
+plannerRobot.addEventListener("change", () => { draw(shownFrame); report(); });
 let timer = null, budget = 0;
 function stop() {
   if (timer) { clearInterval(timer); timer = null; remember(); }
@@ -526,7 +580,8 @@ layout();
 draw(hashTime() === null ? 0 : frameAt(hashTime()));
 if (location.search.indexOf("selftest") >= 0) {
   // Opened at the address's time, if it gave one.
-  const opened = ", opened t=" + D.times[shownFrame];
+  const opened = ", opened t=" + D.times[shownFrame] +
+    (plannerMaps ? ", planner walls at open " + drawnPlannerWalls : "");
   slider.value = String(Math.floor((D.frames.length - 1) / 2));
   slider.dispatchEvent(new Event("input"));
   // The keys step one frame and back; the PNG of the frame is a PNG.
@@ -561,11 +616,12 @@ if (location.search.indexOf("selftest") >= 0) {
 
 }  // namespace
 
-std::string replay_html(const RunFiles& run, std::size_t max_frames) {
+std::string replay_html(const RunFiles& run, std::size_t max_frames,
+                        std::optional<std::uint32_t> planner_robot) {
   // The page's text with its placeholders filled in (placeholders, so that the page's script
   // keeps its braces): the title where it shows, the data where the script reads them.
   const std::string title = html_escape(scenario_name(run.scenario.source));
-  const std::string data = data_literal(run, std::max<std::size_t>(max_frames, 2));
+  const std::string data = data_literal(run, std::max<std::size_t>(max_frames, 2), planner_robot);
   std::string out;
   for (std::size_t at = 0; at < kPage.size();) {
     const std::size_t next = kPage.find('@', at);

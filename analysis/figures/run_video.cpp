@@ -17,6 +17,7 @@
 
 #include "analysis/figures/figures.hpp"
 #include "analysis/figures/map_legend.hpp"
+#include "analysis/figures/planner_map_view.hpp"
 #include "analysis/figures/robot_palette.hpp"
 #include "analysis/figures/unknown_area.hpp"
 #include "geometry/voronoi_partition.hpp"
@@ -151,9 +152,12 @@ Layers frame_layers(Layers layers) {
 class FrameDrawer {
  public:
   FrameDrawer(const Scenario& scenario, const std::vector<RobotTrack>& tracks, int width,
-              const Layers& layers, const KnownCells* known)
+              const Layers& layers, const KnownCells* known, const PlannerMapRecord* maps,
+              std::optional<std::uint32_t> robot)
       : scenario_(scenario),
         known_(known),
+        maps_(maps != nullptr && !maps->empty() && robot ? maps : nullptr),
+        robot_(robot.value_or(0)),
         tracks_(tracks),
         layers_(frame_layers(layers)),
         // Text of 14 pixels in a frame 960 wide, never under 8.
@@ -161,7 +165,8 @@ class FrameDrawer {
         marks_{font_ / 10},
         view_(scenario),
         legend_(layers_.has(Layer::legend)
-                    ? map_legend(layers_, marks_, view_, font_, known != nullptr && !known->empty())
+                    ? map_legend(layers_, marks_, view_, font_, known != nullptr && !known->empty(),
+                                 maps_ != nullptr)
                     : Legend({}, font_)),
         integrator_(*scenario.environment, *scenario.density),
         name_(scenario_name(scenario.source)) {
@@ -204,6 +209,8 @@ class FrameDrawer {
     if (has(Layer::paths))
       for (std::size_t i = 0; i < tracks_.size(); ++i)
         c.polyline(trails_.px[i], marks_.path(robot_colour(i)));
+    if (maps_ != nullptr)
+      draw_planner_map(c, view_, marks_, maps_->at(robot_, t), robot_colour(robot_));
     for (std::size_t i = 0; i < tracks_.size(); ++i) {
       const RobotTrack& k = tracks_[i];
       if (k.t.empty()) continue;
@@ -229,6 +236,8 @@ class FrameDrawer {
  private:
   const Scenario& scenario_;
   const KnownCells* known_;
+  const PlannerMapRecord* maps_;  // set when one robot's planner map is drawn
+  std::uint32_t robot_;
   const std::vector<RobotTrack>& tracks_;
   Layers layers_;
   double font_;
@@ -276,7 +285,7 @@ void write_run_video(const Scenario& scenario, const CoverageOutcome& outcome,
   if (!(options.fps > 0) || !(options.fps <= 240))
     throw std::runtime_error("video frame rate must be in (0, 240]");
   FrameDrawer frames_of(scenario, tracks, std::max(160, options.width) / 2 * 2, options.layers,
-                        options.known);
+                        options.known, options.planner_maps, options.planner_robot);
   const int w = frames_of.width(), h = frames_of.height();
   const double end = outcome.sim_time.seconds();
   const std::size_t frames = video_frames(end, options);

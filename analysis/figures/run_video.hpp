@@ -4,10 +4,12 @@
 // legend and a clock: the layers asked for) piped to Debian's ffmpeg, which encodes MP4
 // (H.264) or GIF by the file's extension.
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include "analysis/figures/layers.hpp"
 #include "analysis/records/known_cells.hpp"
+#include "analysis/records/planner_map_record.hpp"
 #include "analysis/records/robot_track.hpp"
 #include "sim/coverage_run.hpp"
 
@@ -21,6 +23,10 @@ struct VideoOptions {
   Layers layers = Layers::all();  // of these, what a frame shows (not virtual paths or real cells)
   const KnownCells* known = nullptr;  // robots that mapped Ω: what they did not know yet, shaded
   bool progress = false;              // a progress line on stderr, when it is a terminal
+  // Planners that kept maps of their own: robot `planner_robot`'s walls and way ahead at each
+  // frame's time.
+  const PlannerMapRecord* planner_maps = nullptr;
+  std::optional<std::uint32_t> planner_robot;
 };
 
 // The number of frames a run of `sim_time` seconds gives.

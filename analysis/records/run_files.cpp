@@ -4,6 +4,8 @@
 #include <zlib.h>
 
 #include <charconv>
+#include <cmath>
+#include <optional>
 #include <sstream>
 #include <string_view>
 
@@ -234,42 +236,61 @@ RunFiles read_run_files(const fs::path& dir) {
         f.known.robots[r].push_back(v[3 + r]);
     });
   }
-  // planner_map.csv: each robot's planner's walls and way, as it ended the run.
+  // planner_map.csv: what the planners with maps of their own planned on, over the run.
   const fs::path pictures = dir / "planner_map.csv";
   if (fs::exists(pictures)) {
-    f.planner_maps.assign(f.outcome.robots.size(), {});
     LineReader lines(pictures);
     std::string line;
     lines.next(line);
-    if (line != "robot,kind,x0,y0,x1,y1")
-      throw ScenarioError(fmt::format(
-          "{}: expected the header robot,kind,x0,y0,x1,y1, found \"{}\"", pictures.string(), line));
+    if (line != PlannerMapRecord::kHeader)
+      throw ScenarioError(fmt::format("{}: expected the header {}, found \"{}\"", pictures.string(),
+                                      PlannerMapRecord::kHeader, line));
+    const std::size_t robots = f.outcome.robots.size();
+    PlannerMapRecord& r = f.planner_maps;
     for (std::size_t row = 2; lines.next(line); ++row) {
       std::istringstream in(line);
-      std::string field[6];
+      std::string field[7];
       for (std::string& s : field)
         std::getline(in, s, ',');
-      const auto bad = [&] {
-        return ScenarioError(
-            fmt::format("{}:{}: expected robot,wall|path,x0,y0,x1,y1, found \"{}\"",
-                        pictures.string(), row, line));
+      const auto bad = [&](std::string_view why) {
+        return ScenarioError(fmt::format(
+            "{}:{}: {}: expected robot,wall|path|stop,t,x0,y0,x1,y1 (robot empty for a shared "
+            "map's wall, no coordinates for a stop), found \"{}\"",
+            pictures.string(), row, why, line));
       };
-      double v[4];
-      std::uint32_t robot = 0;
+      const std::string& kind = field[1];
+      if (kind != "wall" && kind != "path" && kind != "stop") throw bad("an unknown kind");
+      std::optional<std::uint32_t> robot;
+      double t = 0.0, v[4] = {0.0, 0.0, 0.0, 0.0};
       try {
-        robot = static_cast<std::uint32_t>(std::stoul(field[0]));
-        for (int k = 0; k < 4; ++k)
-          v[k] = std::stod(field[2 + k]);
+        if (!field[0].empty() || kind != "wall") {
+          const unsigned long id = std::stoul(field[0]);
+          if (id >= robots) throw bad(fmt::format("no robot {} (the run has {})", id, robots));
+          robot = static_cast<std::uint32_t>(id);
+        }
+        t = std::stod(field[2]);
+        if (kind != "stop")
+          for (int k = 0; k < 4; ++k)
+            v[k] = std::stod(field[3 + k]);
+      } catch (const ScenarioError&) {
+        throw;
       } catch (const std::exception&) {
-        throw bad();
+        throw bad("a field is not a number");
       }
-      if (robot >= f.planner_maps.size() || (field[1] != "wall" && field[1] != "path")) throw bad();
-      PlannerPicture& p = f.planner_maps[robot];
-      if (field[1] == "wall") {
-        p.walls.emplace_back(Vec2{v[0], v[1]}, Vec2{v[2], v[3]});
+      if (!std::isfinite(t) || t < 0.0) throw bad("a time that is not a finite t >= 0");
+      const double last = std::max(r.walls.empty() ? 0.0 : r.walls.back().t,
+                                   r.ways.empty() ? 0.0 : r.ways.back().t);
+      if (t < last) throw bad("rows out of time order");
+      if (kind == "wall") {
+        r.walls.push_back({t, robot, {v[0], v[1]}, {v[2], v[3]}});
+      } else if (kind == "stop") {
+        r.ways.push_back({t, *robot, {}});
       } else {
-        if (p.path.empty()) p.path.push_back({v[0], v[1]});
-        p.path.push_back({v[2], v[3]});
+        // A way's legs follow one another in rows of one robot and time.
+        const bool more = !r.ways.empty() && r.ways.back().robot == *robot &&
+                          r.ways.back().t == t && !r.ways.back().points.empty();
+        if (!more) r.ways.push_back({t, *robot, {{v[0], v[1]}}});
+        r.ways.back().points.push_back({v[2], v[3]});
       }
     }
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/records/known_cells.hpp"
+#include "analysis/records/planner_map_record.hpp"
 #include "analysis/records/robot_track.hpp"
 #include "analysis/records/run_recorder.hpp"
 #include "sim/coverage_run.hpp"
@@ -19,8 +20,8 @@ struct RunFiles {
   std::vector<TrajectoryRow> trajectory;
   std::vector<MetricsSample> samples;  // the cost columns of metrics.csv
   KnownCells known;                    // map.csv, when the robots mapped Ω
-  // planner_map.csv, per robot, when the planners kept maps of their own (else empty).
-  std::vector<PlannerPicture> planner_maps;
+  // planner_map.csv, when the planners kept maps of their own (else empty).
+  PlannerMapRecord planner_maps;
   // Each robot's track, as RunRecorder kept it.
   std::vector<RobotTrack> tracks() const;
 };

@@ -160,6 +160,7 @@ void RunRecorder::on_sample(SimTime t, const CoverageController& controller) {
   sampler_.on_sample(t, controller);
   metrics_buffer_ += csv_row(metrics_fields(), sampler_.samples().back()) + "\n";
   flush(false);
+  planner_log_.record(t.seconds(), controller.robots());
 }
 
 void RunRecorder::on_finish(SimTime t, const CoverageController& c) {
@@ -199,18 +200,10 @@ void RunRecorder::on_finish(SimTime t, const CoverageController& c) {
     map_->stream() << text;
   }
   // What the planners planned on, where they keep a map of their own (planner.map "sensed").
-  std::string pictures;
-  for (const Robot& r : c.robots()) {
-    const PlannerPicture p = r.planner->picture();
-    for (const auto& [a, b] : p.walls)
-      pictures += fmt::format("{},wall,{},{},{},{}\n", r.id, a.x, a.y, b.x, b.y);
-    for (std::size_t k = 0; k + 1 < p.path.size(); ++k)
-      pictures += fmt::format("{},path,{},{},{},{}\n", r.id, p.path[k].x, p.path[k].y,
-                              p.path[k + 1].x, p.path[k + 1].y);
-  }
-  if (!pictures.empty()) {
+  planner_log_.record(t.seconds(), c.robots());
+  if (!planner_log_.record().empty()) {
     planner_map_ = std::make_unique<AtomicFile>(dir_ / "planner_map.csv");
-    planner_map_->stream() << "robot,kind,x0,y0,x1,y1\n" << pictures;
+    planner_map_->stream() << planner_log_.record().csv();
   }
   const std::size_t before = sampler_.samples().size();
   sampler_.on_finish(t, c);

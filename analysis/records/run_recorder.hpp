@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "analysis/records/known_cells.hpp"
+#include "analysis/records/planner_map_log.hpp"
 #include "analysis/records/robot_track.hpp"
 #include "io/atomic_file.hpp"
 #include "robot/coverage_controller.hpp"
@@ -89,14 +90,15 @@ class RunRecorder final : public CoverageObserver {
   // A last sample at the end of the run; for robots that mapped Ω, DIR/map.csv: per cell of
   // Ω's known-area lattice its centre and when the maps first held it (x, y, t; inf: never),
   // and with mapping.robot_maps when each robot's own did (r0, r1, ...); for planners that
-  // keep a map of their own (planner.map "sensed"), DIR/planner_map.csv: each robot's
-  // planner's walls and the way it still had ahead (robot, kind "wall" or "path", x0, y0,
-  // x1, y1; free space on the left of a wall).
+  // keep a map of their own (planner.map "sensed"), DIR/planner_map.csv: the walls their
+  // maps gained and the ways they had ahead, at each sample (PlannerMapRecord).
   void on_finish(SimTime t, const CoverageController& c) override;
   // Moves the files into place.
   void commit();
   // The map's cells (empty when Ω was known).
   const KnownCells& known_cells() const { return known_; }
+  // What the planners with maps of their own planned on (empty for the others).
+  const PlannerMapRecord& planner_maps() const { return planner_log_.record(); }
 
   const std::vector<RobotTrack>& tracks() const { return tracks_; }
   const std::vector<MetricsSample>& samples() const { return sampler_.samples(); }
@@ -120,6 +122,7 @@ class RunRecorder final : public CoverageObserver {
   std::filesystem::path dir_;
   std::unique_ptr<AtomicFile> map_, planner_map_;
   KnownCells known_;
+  PlannerMapLog planner_log_;
 };
 
 }  // namespace covsim

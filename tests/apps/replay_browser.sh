@@ -8,7 +8,8 @@
 # time opens the page there and moves it when the address changes, the robots are the
 # figures' colours, the cost plot and the map are beside each other inside the window with
 # the map filling its height, the title is the scenario's name; an error in the page is
-# reported. A screenshot is taken. Skipped (77) without Chromium.
+# reported; a sensed-map run's page draws the chosen robot's planner map as it grew. A
+# screenshot is taken. Skipped (77) without Chromium.
 # Usage: replay_browser.sh COVSIM SOURCE WORK
 set -euo pipefail
 covsim=$1 source=$2 work=$3
@@ -77,4 +78,16 @@ sed 's/^draw(hashTime() === null ? 0 : frameAt(hashTime()));$/& notDefined();/' 
 cmp -s broken.html run/replay.html && fail "could not break the page"
 got=$(status "file://$work/broken.html?selftest")
 [[ $got == "errors: Uncaught ReferenceError"* ]] || fail "an error in the page went unreported: $got"
+# A run whose planners plan on a sensed map: `plot --robots 1` opens the page on robot 1's
+# planner map, its walls and way drawn as they were at the frame's time (fewer walls early).
+"$covsim" run "$source/scenarios/u_shape.json" --out sensed --set planner.type=grid_astar \
+  --set environment.known=none --set sensor.range=0.5 > /dev/null
+"$covsim" plot sensed --robots 1 > /dev/null
+walls() { sed -n 's/.*planner walls at open \([0-9]*\),.*/\1/p' <<< "$1"; }
+early=$(status "file://$work/sensed/replay.html?selftest#t=1") late=$(status "file://$work/sensed/replay.html?selftest#t=25")
+[ -n "$(walls "$early")" ] && [ -n "$(walls "$late")" ] && [ "$(walls "$late")" -gt "$(walls "$early")" ] ||
+  fail "robot 1's planner map in the replay: at 1 s: $early; at 25 s: $late"
+[[ $(status "file://$work/sensed/replay.html?selftest") == *"planner map of robot 1: walls "* ]] ||
+  fail "the page did not open on robot 1's planner map"
+[[ $(status "$page?selftest") != *"planner map"* ]] || fail "a run without planner maps offers one"
 echo "replay ok"

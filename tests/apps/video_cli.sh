@@ -2,7 +2,8 @@
 # `covsim plot DIR --video` and `covsim run --video`: an MP4 and a GIF that ffprobe decodes
 # with the expected frame count and size; the legend under the map (a frame without it is
 # shorter); on a terminal a progress line on stderr while encoding; a bad extension is an
-# error and leaves no file. Skipped (77) without ffmpeg. Usage: video_cli.sh COVSIM SOURCE WORK
+# error and leaves no file; with --robots I, robot I's planner map over time. Skipped (77)
+# without ffmpeg. Usage: video_cli.sh COVSIM SOURCE WORK
 set -euo pipefail
 covsim=$1 source=$2 work=$3
 command -v ffmpeg > /dev/null && command -v ffprobe > /dev/null ||
@@ -61,4 +62,19 @@ rc=$?
 set -e
 [ $rc -eq 2 ] && [[ $err =~ "--video" ]] && [ ! -e u.avi ] && [ ! -e u.avi.partial ] ||
   fail "a .avi video: exit $rc: $err"
+
+# One robot's planner map (--robots I on a run whose planners plan on a sensed map): its walls
+# in dark orange (#d95f02) in the frames, growing as the map does; none without --robots.
+"$covsim" run "$source/scenarios/u_shape.json" --out s --set planner.type=grid_astar \
+  --set environment.known=none --set sensor.range=0.5 > /dev/null
+orange() {  # orange pixels in frame $2 (0-based) of video $1
+  ffmpeg -v error -i "$1" -vf "select=eq(n\\,$2)" -frames:v 1 -f rawvideo -pix_fmt rgb24 - |
+    od -An -v -tu1 -w3 | awk '$1 > 190 && $1 < 240 && $2 > 70 && $2 < 120 && $3 < 40 {n++} END {print n + 0}'
+}
+"$covsim" plot s --robots 1 --video s1.mp4 --fps 5 --speed 10 --video-width 480 > /dev/null
+"$covsim" plot s --video s.mp4 --fps 5 --speed 10 --video-width 480 > /dev/null
+frames=$(probe s1.mp4 | cut -d, -f4)
+first=$(orange s1.mp4 1) last=$(orange s1.mp4 $((frames - 1))) none=$(orange s.mp4 $((frames - 1)))
+[ "$last" -gt $((none + 200)) ] && [ "$last" -gt "$first" ] ||
+  fail "robot 1's planner map: $first orange pixels in frame 1, $last in the last ($none without --robots)"
 echo "video ok"

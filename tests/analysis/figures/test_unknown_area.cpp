@@ -6,9 +6,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <set>
 #include <string>
 
 #include "analysis/figures/figures.hpp"
+#include "analysis/figures/replay_html.hpp"
 #include "analysis/records/final_json.hpp"
 #include "analysis/records/run_files.hpp"
 #include "analysis/records/run_recorder.hpp"
@@ -141,40 +144,73 @@ TEST_CASE("with robot_maps map.csv holds each robot's own map, never ahead of th
               "fill-opacity:0.45") == own_unknown + 1);
 }
 
-TEST_CASE("planner_map.csv holds each sensed-map planner's walls and way, and the scene draws them",
+TEST_CASE("planner_map.csv holds the sensed-map planners' walls and ways over the run",
           "[figures][mapping]") {
-  // Centralized, the planners share one map: every robot's rows hold the same walls.
+  // Centralized, the planners share one map: its walls are written once (robot empty).
   const RecordedRun recorded(
       "u_shape.json",
       {{"planner", {{"type", "grid_astar"}}}, {"mapping", {{"compare_known", false}}}},
       "planner-map-");
   const std::string csv = covsim::test::file_text(recorded.dir / "planner_map.csv");
-  CHECK(csv.rfind("robot,kind,x0,y0,x1,y1\n", 0) == 0);
+  CHECK(csv.rfind("robot,kind,t,x0,y0,x1,y1\n", 0) == 0);
+  CHECK(count(csv, "\n,wall,") == count(csv, ",wall,"));
   const RunFiles run = recorded.read_back();
-  REQUIRE(run.planner_maps.size() == recorded.outcome.robots.size());
-  for (const PlannerPicture& p : run.planner_maps) {
-    CHECK(p.walls.size() == run.planner_maps[0].walls.size());
+  const PlannerMapRecord& kept = recorded.recorder.planner_maps();
+  // Read back as written.
+  REQUIRE(run.planner_maps.walls.size() == kept.walls.size());
+  REQUIRE(run.planner_maps.ways.size() == kept.ways.size());
+  for (std::size_t k = 0; k < kept.ways.size(); ++k) {
+    CHECK(run.planner_maps.ways[k].robot == kept.ways[k].robot);
+    CHECK(run.planner_maps.ways[k].points.size() == kept.ways[k].points.size());
+  }
+  const double end = recorded.outcome.sim_time.seconds();
+  for (std::uint32_t i = 0; i < recorded.outcome.robots.size(); ++i) {
+    const PlannerPicture p = run.planner_maps.at(i, end);
+    CHECK(p.walls.size() == run.planner_maps.at(0, end).walls.size());
     CHECK(!p.walls.empty());
-    // Every wall it holds lies on ∂Ω shrunk by nothing (points): it saw it there.
+    // Every wall it holds lies on ∂Ω (points: the free space is Ω): it saw it there.
     for (const auto& [a, b] : p.walls) {
       const Vec2 m = 0.5 * (a + b);
-      CHECK(distance(m, recorded.scenario.environment->closest_point(m)) <= 1e-9);
       CHECK(recorded.scenario.environment->boundary_distance(m) <= 1e-9);
     }
+    // The maps grew: fewer walls earlier; each way's rows follow the robot's replans.
+    CHECK(run.planner_maps.at(i, 1.0).walls.size() < p.walls.size());
   }
-  CHECK(count(csv, ",wall,") == run.planner_maps.size() * run.planner_maps[0].walls.size());
+  CHECK(std::is_sorted(kept.walls.begin(), kept.walls.end(),
+                       [](const auto& x, const auto& y) { return x.t < y.t; }));
+  CHECK(kept.ways.size() > recorded.outcome.robots.size());
   // One robot drawn: its planner's walls, a line each, and its way ahead; with every robot
-  // drawn, no one planner's map.
+  // drawn, no one planner's map. At a time window's end, the map as it was then.
   const FigureFile file;  // SVG
-  const auto drawn = [&](std::vector<std::uint32_t> robots, bool maps) {
+  const auto drawn = [&](std::vector<std::uint32_t> robots, bool maps,
+                         std::optional<double> until = std::nullopt) {
     SceneOptions options;
     options.robots = std::move(robots);
+    if (until) options.time_window = std::pair{0.0, *until};
     if (maps) options.planner_maps = &run.planner_maps;
     return count(scene_figure(recorded.scenario, recorded.outcome, run.tracks(), options, file),
                  "<path");
   };
-  CHECK(drawn({1}, true) >= drawn({1}, false) + run.planner_maps[1].walls.size());
+  CHECK(drawn({1}, true) >= drawn({1}, false) + run.planner_maps.at(1, end).walls.size());
   CHECK(drawn({}, true) == drawn({}, false));
+  CHECK(drawn({1}, true, 1.0) - drawn({1}, false, 1.0) < drawn({1}, true) - drawn({1}, false));
+  // replay.html carries the record and opens on the robot asked for.
+  const std::string page = replay_html(run, 100, 1);
+  CHECK(page.find("\"planner\":{\"robot\":1,\"walls\":[") != std::string::npos);
+  CHECK(replay_html(run, 100).find("\"planner\":{\"robot\":-1,") != std::string::npos);
+  // Decentralized, each robot's map is its own: its rows carry its ID.
+  const RecordedRun own("u_shape.json",
+                        {{"planner", {{"type", "grid_astar"}}},
+                         {"network", {{"range", 100.0}}},
+                         {"mapping", {{"compare_known", false}}}},
+                        "planner-map-own-");
+  const PlannerMapRecord& mine = own.recorder.planner_maps();
+  REQUIRE(!mine.walls.empty());
+  CHECK(std::all_of(mine.walls.begin(), mine.walls.end(), [](const auto& w) { return w.robot; }));
+  std::set<std::uint32_t> robots;
+  for (const auto& w : mine.walls)
+    robots.insert(*w.robot);
+  CHECK(robots.size() == own.outcome.robots.size());
   // A run whose planners keep no map writes no such file.
   const RecordedRun tb("u_shape.json", {{"mapping", {{"compare_known", false}}}},
                        "no-planner-map-");

@@ -1,0 +1,43 @@
+#include "analysis/records/planner_map_log.hpp"
+
+namespace covsim {
+
+void PlannerMapLog::record(double t, const std::vector<Robot>& robots) {
+  std::vector<PlannerPicture> pictures;
+  pictures.reserve(robots.size());
+  // The robots of each map, in the order of their first robot (not of the maps' addresses:
+  // the file is the same from run to run).
+  std::vector<std::pair<const void*, std::vector<std::uint32_t>>> maps;
+  std::unordered_map<const void*, std::size_t> index;
+  for (std::uint32_t i = 0; i < robots.size(); ++i) {
+    pictures.push_back(robots[i].planner->picture());
+    const void* m = pictures.back().map;
+    if (m == nullptr) continue;
+    const auto [it, fresh] = index.try_emplace(m, maps.size());
+    if (fresh) maps.emplace_back(m, std::vector<std::uint32_t>{});
+    maps[it->second].second.push_back(i);
+  }
+  // A map's walls keep their order and only extend: each is new, longer, or as it was.
+  for (const auto& [m, users] : maps) {
+    const auto& walls = pictures[users.front()].walls;
+    auto& last = walls_[m];
+    const std::optional<std::uint32_t> robot =
+        users.size() == 1 ? std::optional(users.front()) : std::nullopt;
+    for (std::size_t k = 0; k < walls.size(); ++k)
+      if (k >= last.size() || walls[k] != last[k])
+        record_.walls.push_back({t, robot, walls[k].first, walls[k].second});
+    last = walls;
+  }
+  ways_.resize(robots.size());
+  for (std::uint32_t i = 0; i < robots.size(); ++i) {
+    if (pictures[i].map == nullptr) continue;
+    std::vector<Vec2> way = std::move(pictures[i].path);
+    if (way.size() < 2) way.clear();
+    // A robot's first way is written unless it has none; after that, each change.
+    if (ways_[i] ? *ways_[i] == way : way.empty()) continue;
+    record_.ways.push_back({t, i, way});
+    ways_[i] = std::move(way);
+  }
+}
+
+}  // namespace covsim
