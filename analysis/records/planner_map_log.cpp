@@ -21,11 +21,18 @@ void PlannerMapLog::record(double t, const std::vector<Robot>& robots) {
   for (const auto& [m, users] : maps) {
     const auto& walls = pictures[users.front()].walls;
     auto& last = walls_[m];
-    const std::optional<std::uint32_t> robot =
-        users.size() == 1 ? std::optional(users.front()) : std::nullopt;
-    for (std::size_t k = 0; k < walls.size(); ++k)
-      if (k >= last.size() || walls[k] != last[k])
-        record_.walls.push_back({t, robot, walls[k].first, walls[k].second});
+    // Written once, robot unset, when every robot shares the map; else under each robot that
+    // uses it (with bodies, each part of the free space has its own shared map).
+    const bool everyone = users.size() == robots.size();
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+      if (k < last.size() && walls[k] == last[k]) continue;
+      if (everyone) {
+        record_.walls.push_back({t, std::nullopt, walls[k].first, walls[k].second});
+      } else {
+        for (const std::uint32_t u : users)
+          record_.walls.push_back({t, u, walls[k].first, walls[k].second});
+      }
+    }
     last = walls;
   }
   ways_.resize(robots.size());

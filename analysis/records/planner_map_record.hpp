@@ -33,7 +33,7 @@ struct PlannerMapRecord {
 
   // planner_map.csv: a row per wall (kind "wall", from (x0, y0) to (x1, y1)), per leg of a
   // way (kind "path", in order) and per end of a way (kind "stop", no coordinates); robot
-  // empty for a shared map's walls.
+  // empty for the walls of a map every robot shares.
   static constexpr std::string_view kHeader = "robot,kind,t,x0,y0,x1,y1";
   std::string csv() const;
 };

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -216,4 +217,52 @@ TEST_CASE("planner_map.csv holds the sensed-map planners' walls and ways over th
                        "no-planner-map-");
   CHECK_FALSE(std::filesystem::exists(tb.dir / "planner_map.csv"));
   CHECK(tb.read_back().planner_maps.empty());
+}
+
+namespace {
+// A planner whose picture is set by the test.
+class Pictured final : public Planner {
+ public:
+  explicit Pictured(PlannerPicture p) : p_(std::move(p)) {}
+  std::string_view name() const override { return "pictured"; }
+  void set_goal(Vec2) override {}
+  PlanStep step(const SensorReading& r, double) override {
+    return {r.position, PlanStatus::reached};
+  }
+  PlannerPicture picture() const override { return p_; }
+
+ private:
+  PlannerPicture p_;
+};
+}  // namespace
+
+TEST_CASE("a map shared by some robots only is recorded under each of them", "[figures][mapping]") {
+  // Robots 0 and 1 share one map (one part of the free space), robot 2 has another.
+  const int a = 0, b = 0;
+  const auto robot = [](const void* map, Vec2 from, Vec2 to) {
+    Robot r;
+    r.planner = std::make_unique<Pictured>(PlannerPicture{{{from, to}}, {}, map});
+    return r;
+  };
+  std::vector<Robot> robots;
+  robots.push_back(robot(&a, {0, 0}, {1, 0}));
+  robots.push_back(robot(&a, {0, 0}, {1, 0}));
+  robots.push_back(robot(&b, {5, 0}, {6, 0}));
+  PlannerMapLog log;
+  log.record(0.5, robots);
+  const PlannerMapRecord& r = log.record();
+  REQUIRE(r.walls.size() == 3);
+  CHECK(r.at(0, 1.0).walls.size() == 1);
+  CHECK(r.at(2, 1.0).walls.size() == 1);
+  CHECK(r.at(2, 1.0).walls[0].first == Vec2{5, 0});
+  CHECK(r.at(1, 0.4).walls.empty());
+  // Shared by every robot: written once, under no robot.
+  std::vector<Robot> all;
+  for (int k = 0; k < 3; ++k)
+    all.push_back(robot(&a, {0, 0}, {1, 0}));
+  PlannerMapLog shared;
+  shared.record(0.5, all);
+  REQUIRE(shared.record().walls.size() == 1);
+  CHECK_FALSE(shared.record().walls[0].robot);
+  CHECK(shared.record().at(2, 0.5).walls.size() == 1);
 }
