@@ -114,8 +114,9 @@ PlanStep PotentialField::step(const SensorReading& r, double max_step) {
       (p_.sensed ? open_in_reading(r, x, goal_, env_.tolerance())
                  : env_.segment_inside(x, goal_))) {
     if (dg <= max_step) {
-      // On what it senses, a last step it could not see is claimed once taken.
-      if (!p_.sensed || dg <= r.range) status_ = PlanStatus::reached;
+      // On what it senses, a last step it could not see is claimed once taken, and so is
+      // one it saw through noisy ranges (a goal within the noise of a wall may lie beyond it).
+      if (!p_.sensed || (dg <= r.range && !p_.noisy)) status_ = PlanStatus::reached;
       return PlanStep{goal_, status_};
     }
     return PlanStep{x + (max_step / dg) * (goal_ - x), status_};
@@ -153,6 +154,7 @@ PlannerEntry potential_field_entry() {
     p.stall_window = static_cast<std::size_t>(params.integer("stall_window"));
     p.sensed = plans_on_sensed_map(params);
     p.progress = std::max(p.progress, 3.0 * ctx.sensor.spread());
+    p.noisy = ctx.sensor.spread() > 0.0;
     const Environment* env = &ctx.environment;
     return [env, p] { return std::make_unique<PotentialField>(*env, p); };
   };

@@ -31,6 +31,7 @@ struct PotentialFieldParams {
   std::size_t stall_window = 50;  // steps
   double progress = 1e-3;         // metres: the least gain that counts within a window
   bool sensed = false;            // planner.map "sensed": Ω is never consulted
+  bool noisy = false;             // its readings carry range or position noise
   // influence a tenth of Ω's bounding-box diameter, progress 1e-3 of it.
   static PotentialFieldParams for_environment(double diameter);
 };

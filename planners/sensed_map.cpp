@@ -14,7 +14,7 @@ constexpr double kMaxCells = double(1 << 24);
 }  // namespace
 
 SensedMap::SensedMap(const Box& bounds, double resolution, double tolerance, double spread)
-    : h_(resolution), tol_(tolerance), merge_(std::max(tolerance, 3.0 * spread)) {
+    : h_(resolution), tol_(tolerance), spread_(spread), merge_(std::max(tolerance, 3.0 * spread)) {
   if (!(resolution > 0.0)) throw std::invalid_argument("a sensed map's cells need a side > 0");
   const Vec2 size = bounds.size();
   const double nx = std::ceil(size.x / h_) + 2 * kMargin, ny = std::ceil(size.y / h_) + 2 * kMargin;
@@ -39,9 +39,9 @@ std::uint32_t SensedMap::cell_of(Vec2 p) const {
   return index(i, j);
 }
 
-std::vector<SensedMap::Gap> SensedMap::uncovered(Vec2 a, Vec2 b) const {
+std::vector<SensedMap::Gap> SensedMap::uncovered(Vec2 a, Vec2 b, double merge) const {
   // The pieces held along the same line, facing the same way, cover the union of their
-  // stretches over a -> b; what they leave, by more than merge_, is new.
+  // stretches over a -> b; what they leave, by more than `merge`, is new.
   const Vec2 d = b - a;
   const double len = norm(d);
   if (len <= tol_) return {};
@@ -62,8 +62,7 @@ std::vector<SensedMap::Gap> SensedMap::uncovered(Vec2 a, Vec2 b) const {
       const Vec2 sd = s.b - s.a;
       const double sl = norm(sd);
       if (sl <= 0.0 || dot(sd, d) <= 0.0) continue;
-      if (std::fabs(cross(sd, a - s.a)) / sl > merge_ ||
-          std::fabs(cross(sd, b - s.a)) / sl > merge_)
+      if (std::fabs(cross(sd, a - s.a)) / sl > merge || std::fabs(cross(sd, b - s.a)) / sl > merge)
         continue;
       spans.push_back(Span{dot(s.a - a, e), dot(s.b - a, e), k});
     }
@@ -73,27 +72,31 @@ std::vector<SensedMap::Gap> SensedMap::uncovered(Vec2 a, Vec2 b) const {
   std::vector<Gap> gaps;
   double reach = 0.0, held = -INFINITY;  // held: the farthest end of a piece so far
   std::optional<std::uint32_t> by;       // the piece that ends there
-  const auto ending = [&]() { return held >= -merge_ ? by : std::nullopt; };
+  const auto ending = [&]() { return held >= -merge ? by : std::nullopt; };
   for (const Span& s : spans) {
-    if (reach >= len - merge_) break;
-    if (s.lo > reach + merge_)
+    if (reach >= len - merge) break;
+    if (s.lo > reach + merge)
       gaps.push_back(Gap{reach, std::min(s.lo, len), ending(),
-                         s.lo <= len + merge_ ? std::optional(s.piece) : std::nullopt});
+                         s.lo <= len + merge ? std::optional(s.piece) : std::nullopt});
     if (s.hi > held) {
       held = s.hi;
       by = s.piece;
     }
     reach = std::max(reach, held);
   }
-  if (reach < len - merge_) gaps.push_back(Gap{reach, len, ending(), std::nullopt});
+  if (reach < len - merge) gaps.push_back(Gap{reach, len, ending(), std::nullopt});
   return gaps;
 }
 
 bool SensedMap::add_wall(Vec2 a, Vec2 b) {
+  return add_stretches(a, b, merge_, spread_ == 0.0);
+}
+
+bool SensedMap::add_stretches(Vec2 a, Vec2 b, double merge, bool exact) {
   if (!is_finite(a) || !is_finite(b)) return false;
   // Only the stretches not held yet, each joined to the piece it continues: a wall shown by
   // many readings stays a few pieces, however its stretches came into view.
-  const auto gaps = uncovered(a, b);
+  const auto gaps = uncovered(a, b, merge);
   const double len = distance(a, b);
   for (const Gap& g : gaps) {
     const Vec2 u = g.before        ? pieces_[*g.before].b
@@ -104,15 +107,17 @@ bool SensedMap::add_wall(Vec2 a, Vec2 b) {
     if (g.before) {
       k = *g.before;
       pieces_[k].b = v;
+      pieces_[k].exact = pieces_[k].exact && exact;
     } else if (g.after) {
       k = *g.after;
       pieces_[k].a = u;
+      pieces_[k].exact = pieces_[k].exact && exact;
     } else {
       k = static_cast<std::uint32_t>(pieces_.size());
-      pieces_.push_back(Piece{u, v});
+      pieces_.push_back(Piece{u, v, exact});
       seen_.push_back(0);
     }
-    added_.push_back(Piece{u, v});
+    added_.push_back(Piece{u, v, exact});
     mark(u, v, k);
   }
   return !gaps.empty();
@@ -143,7 +148,9 @@ bool SensedMap::add(const SensorReading& r) {
     if (!(len > 0.0)) continue;
     const double at = project_to_segment(r.position, c.a, c.b).t * len;
     const double from = std::max(0.0, at - h_), to = std::min(len, at + h_);
-    added = add_wall(c.a + (from / len) * (c.b - c.a), c.a + (to / len) * (c.b - c.a)) || added;
+    added = add_stretches(c.a + (from / len) * (c.b - c.a), c.a + (to / len) * (c.b - c.a), tol_,
+                          true) ||
+            added;
   }
   return added;
 }
@@ -155,6 +162,11 @@ bool SensedMap::leaves_free(Vec2 p, Vec2 d) const {
   const auto left = [&](const Piece& s) { return cross(s.b - s.a, d) >= 0.0; };
   const Piece *in = nullptr, *out = nullptr;
   const double tol2 = tol_ * tol_;
+  // Within the noise of a noisy piece's interior is on it (it may pass between the robot and
+  // the free space it stands in).
+  const auto near2 = [&](const Piece& s, const SegmentProjection& pr) {
+    return !s.exact && pr.t > 0.0 && pr.t < 1.0 ? merge_ * merge_ : tol2;
+  };
   bool ok = true;
   const std::uint32_t c = cell_of(p);
   ++query_;
@@ -170,7 +182,8 @@ bool SensedMap::leaves_free(Vec2 p, Vec2 d) const {
           in = &s;
         } else if (norm2(p - s.a) <= tol2) {
           out = &s;
-        } else if (norm2(p - project_to_segment(p, s.a, s.b).point) <= tol2 && !left(s)) {
+        } else if (const SegmentProjection pr = project_to_segment(p, s.a, s.b);
+                   norm2(p - pr.point) <= near2(s, pr) && !left(s)) {
           ok = false;
           break;
         }
@@ -217,9 +230,11 @@ bool SensedMap::clear(Vec2 p, Vec2 q) const {
   });
   for (const std::uint32_t k : met) {
     const Piece& s = pieces_[k];
-    // A piece an end lies on (to rounding) is for leaves_free.
+    // A piece an end lies on (to rounding, or within the noise of its interior) is for
+    // leaves_free.
     const auto on = [&](Vec2 e) {
-      return norm2(e - project_to_segment(e, s.a, s.b).point) <= tol2;
+      const SegmentProjection pr = project_to_segment(e, s.a, s.b);
+      return norm2(e - pr.point) <= (!s.exact && pr.t > 0.0 && pr.t < 1.0 ? merge_ * merge_ : tol2);
     };
     const int o1 = orientation(p, q, s.a), o2 = orientation(p, q, s.b);
     const int o3 = orientation(s.a, s.b, p), o4 = orientation(s.a, s.b, q);

@@ -32,13 +32,18 @@ class SensedMap {
 
   // The walls of a reading (its visible pieces, and of each wall it touches the stretch a
   // cell's side either way of the touch); whether it showed a wall the map did not hold (a
-  // new piece, even within wall cells).
+  // new piece, even within wall cells). A touch is exact, however noisy the ranges: a touched
+  // stretch is new unless the walls held cover it to the tolerance.
   bool add(const SensorReading& reading);
   // One wall piece, free space on its left (a neighbour's, say), kept as the stretches of it
   // not held yet; whether there were any.
   bool add_wall(Vec2 a, Vec2 b);
 
   double resolution() const { return h_; }
+  // How far a sensed wall point may wander between readings (0 for exact readings).
+  double spread() const { return spread_; }
+  // Within this of a wall held, a wall seen is the same wall (and a point lies on it).
+  double merge() const { return merge_; }
   std::int32_t nx() const { return nx_; }
   std::int32_t ny() const { return ny_; }
   std::size_t size() const { return wall_.size(); }
@@ -64,6 +69,8 @@ class SensedMap {
 
   struct Piece {
     Vec2 a, b;  // free space on the left of a -> b
+    // Touched, so where the wall is (else within the noise of it).
+    bool exact = true;
   };
   // The walls held, each a piece or a few along one wall (a stretch that continues a piece
   // extends it).
@@ -101,7 +108,9 @@ class SensedMap {
     double from, to;
     std::optional<std::uint32_t> before, after;
   };
-  std::vector<Gap> uncovered(Vec2 a, Vec2 b) const;
+  std::vector<Gap> uncovered(Vec2 a, Vec2 b, double merge) const;
+  // add_wall, a piece within `merge` of the walls held covering them; `exact` when touched.
+  bool add_stretches(Vec2 a, Vec2 b, double merge, bool exact);
   // Marks the cells a -> b meets as wall cells held by piece k.
   void mark(Vec2 a, Vec2 b, std::uint32_t k);
   // Whether the direction d leaves p into the free side of the pieces p lies on.
@@ -109,7 +118,7 @@ class SensedMap {
   // The squared distance from p to cell (i, j)'s closed square.
   double cell_distance2(std::int32_t i, std::int32_t j, Vec2 p) const;
 
-  double h_, tol_, merge_;
+  double h_, tol_, spread_, merge_;
   Vec2 origin_;
   std::int32_t nx_ = 0, ny_ = 0;
   std::vector<std::uint8_t> wall_;

@@ -12,7 +12,8 @@ std::shared_ptr<SensedMap> sensed_map_for(const Environment& env, double resolut
 
 void SensedMapPlanner::set_goal(Vec2 goal) {
   goal_ = goal;
-  planned_ = projecting_ = false;
+  planned_ = projecting_ = settling_ = false;
+  slide_.reset();
   status_ = PlanStatus::moving;
   follower_.clear();
 }
@@ -113,17 +114,69 @@ PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
   const bool changed = map_->added().size() != first_new;
   seen_pieces_ = map_->added().size();
   if (status_ != PlanStatus::moving) return PlanStep{x, status_};
+  if (settling_) return settle(r, max_step);
   // Walls only ever add: a path still clear stays the best the map allows, but for the way
   // to a projection when a wall nearer the goal came into view.
   // Stopped short of the path's end: by a wall it could not see (a contact sensor's).
-  const bool stopped = planned_ && follower_.done() && !follower_.path().empty() &&
-                       distance(x, follower_.path().back()) > tol_;
+  const bool ended = planned_ && follower_.done() && !follower_.path().empty();
+  const double short_by = ended ? distance(x, follower_.path().back()) : INFINITY;
+  const bool stopped = short_by > tol_ && ended;
+  // On a noisy map the end may lie behind the wall that stopped the robot, within the noise.
+  if (map_->spread() > 0.0 && short_by <= 2.0 * map_->merge()) return start_settling(r, max_step);
   if (!planned_ || stopped || (changed && (nearer_wall() || !ahead_clear(x, first_new)))) replan(x);
+  // A noisy map may show no way out of where the robot stands (walls seen a little too near,
+  // round it): it settles by touch from there.
+  if (status_ == PlanStatus::stalled && map_->spread() > 0.0) return start_settling(r, max_step);
   if (status_ != PlanStatus::moving) return PlanStep{x, status_};
   const Vec2 next = follower_.advance(x, max_step, tol_);
-  // The end is claimed once the last step was seen clear, or taken.
-  if (follower_.done() && distance(x, next) <= std::max(r.range, tol_)) status_ = arrival_;
+  // The end is claimed once the last step was seen clear, or taken; on a noisy map once the
+  // robot stands there and settled by touch.
+  if (follower_.done() && distance(x, next) <= std::max(r.range, tol_) && map_->spread() == 0.0)
+    status_ = arrival_;
   return PlanStep{next, status_};
+}
+
+PlanStep SensedMapPlanner::start_settling(const SensorReading& r, double max_step) {
+  status_ = PlanStatus::moving;
+  settling_ = true;
+  slide_.reset();
+  tried_from_ = Vec2{INFINITY, INFINITY};
+  return settle(r, max_step);
+}
+
+PlanStep SensedMapPlanner::settle(const SensorReading& r, double max_step) {
+  const Vec2 x = r.position;
+  const auto toward = [&](Vec2 p) {
+    tried_from_ = x;
+    const double d = distance(x, p);
+    return PlanStep{d <= max_step ? p : x + (max_step / d) * (p - x), PlanStatus::moving};
+  };
+  if (distance(x, goal_) <= tol_) {
+    status_ = PlanStatus::reached;
+    return PlanStep{x, status_};
+  }
+  const bool held = distance(x, tried_from_) <= tol_;  // the last step did not move it
+  if (slide_ && distance(x, *slide_) > tol_ && !held) return toward(*slide_);
+  if (!slide_ && !held) return toward(goal_);
+  // Stopped: straight for the goal again from the end of a slide; else to the point of the
+  // walls it touches closest to the goal. (Stopped by no wall, a neighbour, say: again.)
+  if (slide_ && !held) {
+    slide_.reset();
+    return toward(goal_);
+  }
+  slide_.reset();
+  std::optional<Vec2> closest;
+  for (const ContactEdge& c : r.contacts) {
+    const Vec2 q = project_to_segment(goal_, c.a, c.b).point;
+    if (!closest || distance(goal_, q) < distance(goal_, *closest)) closest = q;
+  }
+  if (!closest) return toward(goal_);
+  if (distance(x, *closest) <= tol_) {
+    status_ = PlanStatus::projected;
+    return PlanStep{x, status_};
+  }
+  slide_ = closest;
+  return toward(*closest);
 }
 
 }  // namespace covsim

@@ -11,6 +11,14 @@
 // those walls to the goal (the projection, which TangentBug finds the same way under the
 // policy `discover`), chosen again when a wall nearer the goal comes into view, and reports
 // `projected` there; no way out of where it stands reports `stalled`.
+//
+// Under range noise the walls held lie up to a few σ off the true ones, on either side: the
+// landing may stop short of the wall, or a wall seen too near may hide a goal that lies in Ω.
+// So with a noisy map the robot settles by touch, which is exact: from the path's end it drives
+// straight for the goal, reaching it if nothing is in the way; against a wall it touches it
+// slides to the point of the touched walls closest to the goal and tries again from there,
+// and reports `projected` where the goal lies straight into the walls it touches. The
+// distance to the goal only falls on the way, so the settling ends.
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -55,6 +63,9 @@ class SensedMapPlanner : public Planner {
   // On the way to a projection: whether a wall that came into view since it was chosen lies
   // nearer the goal.
   bool nearer_wall() const;
+  // A step of the settling by touch (above), and the first.
+  PlanStep settle(const SensorReading& r, double max_step);
+  PlanStep start_settling(const SensorReading& r, double max_step);
 
   double tol_;
   std::shared_ptr<SensedMap> map_;
@@ -66,6 +77,11 @@ class SensedMapPlanner : public Planner {
   std::size_t replans_ = 0;
   double landing_distance_ = 0.0;   // from the goal to the projection headed for
   std::size_t landing_pieces_ = 0;  // the map's added stretches when it was chosen
+  // Settling by touch: whether it is, where the last step was proposed from, and where it
+  // slides to along the walls touched (none: straight for the goal).
+  bool settling_ = false;
+  Vec2 tried_from_;
+  std::optional<Vec2> slide_;
 };
 
 // A sensed map for planners in `env`, the robot's free space: cells of side `resolution`

@@ -364,13 +364,6 @@ void check_limits(const JsonValue& root, const Scenario& s) {
 // Robots that do not know Ω (environment.known) map it from what they sense: every part
 // that would be told Ω, or needs a map from exact readings, is refused beside it.
 void check_mapping(const JsonValue& root, CoverageConfig& c) {
-  // Noisy walls close narrow passages and move the wall a projection lands on: a sensed map
-  // under range noise breaks the planner contract (a quarter of its cases at 1 cm).
-  if (c.sensor.noise_sigma > 0.0 && plans_on_sensed_map(c.planner.params))
-    root.at("sensor").at("noise").fail(fmt::format(
-        "{} on a sensed map with range noise is not modelled (noisy walls close passages and "
-        "move projections): remove sensor.noise, or plan on the given map",
-        c.planner.type));
   if (!c.mapping.unknown()) {
     // Its defaults may be stated (a described scenario states them); others would be ignored.
     if (auto m = root.find("mapping"); m && !(c.mapping == MappingConfig{}))

@@ -267,3 +267,61 @@ TEST_CASE("sensed map planners: walls a neighbour shares reroute the path", "[se
     bug->learn({{{1.5, 0.5}, {1.5, 1.5}}});
   }
 }
+
+TEST_CASE("sensed map: under range noise a touch is exact, and a noisy wall traps no one",
+          "[sensed_map]") {
+  // σ = 1 cm: the box's west face was seen 2 cm into the room (x = 1.48).
+  SensedMap m(room_box(), 0.05, 1e-9, 0.01);
+  m.add_wall({1.48, 0.5}, {1.48, 1.5});
+  REQUIRE(m.pieces().size() == 1);
+  CHECK_FALSE(m.pieces()[0].exact);
+  // Seen again 1 cm off: within 3σ, the same wall.
+  CHECK_FALSE(m.add_wall({1.49, 0.6}, {1.49, 1.4}));
+  // Touched where it is: a new, exact stretch however near the noisy one.
+  const Environment env = room_with_box();
+  CHECK(m.add(sense(env, {1.5, 1.0}, 0.0)));
+  REQUIRE(m.pieces().size() == 2);
+  CHECK(m.pieces()[1].exact);
+  // A robot standing between the noisy wall and the true one (x = 1.49) leaves to the free
+  // side, not into the box; on an exact wall the leeway is the tolerance only.
+  CHECK(m.clear({1.49, 0.8}, {1.0, 0.8}));
+  CHECK_FALSE(m.clear({1.49, 0.8}, {1.8, 0.8}));
+  SensedMap exact(room_box(), 0.05, 1e-9);
+  exact.add_wall({1.48, 0.5}, {1.48, 1.5});
+  CHECK_FALSE(exact.clear({1.49, 0.8}, {1.0, 0.8}));
+}
+
+TEST_CASE("sensed map planners under range noise settle by touch on ∂Ω", "[sensed_map]") {
+  // σ = 1 cm, and every reading shows the box's west face 2 cm too near (x = 1.48, within
+  // the noise). A goal inside the box ends on the true face, not on the wall seen in front of
+  // it; a goal 1 cm off the face, in the room but behind the wall seen, is reached.
+  const Environment env = room_with_box();
+  for (const char* type : {"grid_astar", "visibility_graph"}) {
+    for (const Vec2 goal : {Vec2{1.8, 1.0}, Vec2{1.49, 1.0}}) {
+      INFO(type << ", goal (" << goal.x << ", " << goal.y << ")");
+      PlannerConfig c;
+      c.type = type;
+      c.params = sensed(0.05);
+      auto planner = planner_source(c, PlannerContext{env, SensorSpec{0.01}})();
+      planner->set_goal(goal);
+      Vec2 x{0.5, 1.0};
+      PlanStatus status = PlanStatus::moving;
+      for (int k = 0; k < 2000 && status == PlanStatus::moving; ++k) {
+        SensorReading r = sense(env, x, 0.5);
+        for (SensedPiece& p : r.visible().pieces)
+          if (p.a.x == 1.5 && p.b.x == 1.5) p.a.x = p.b.x = 1.48;
+        const PlanStep s = planner->step(r, 0.02);
+        x = env.advance(x, s.next);
+        status = s.status;
+      }
+      if (goal.x > 1.5) {
+        CHECK(status == PlanStatus::projected);
+        CHECK(x.x == Approx(1.5).margin(1e-9));
+        CHECK(x.y == Approx(1.0).margin(1e-6));
+      } else {
+        CHECK(status == PlanStatus::reached);
+        CHECK(distance(x, goal) <= 1e-9);
+      }
+    }
+  }
+}

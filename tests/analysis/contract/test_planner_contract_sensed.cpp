@@ -47,6 +47,23 @@ TEST_CASE("contract: visibility_graph on a sensed map reaches what is reachable 
   }
 }
 
+TEST_CASE("contract: map planners on a sensed map under range noise settle by touch",
+          "[contract]") {
+  // Noisy walls lie a few σ either side of the true ones: without settling by touch a
+  // quarter of these cases ended short of ∂Ω, declared a reachable goal unreachable, or
+  // walked back and forth behind a noisy wall.
+  for (const char* planner : {"grid_astar", "visibility_graph"}) {
+    for (double range : {0.5, double(INFINITY)}) {
+      INFO(planner << " at range " << range);
+      ContractSetup s = on_sensed_map(planner, range);
+      s.noise_sigma = 0.01;
+      const ContractSummary r = check_sensed(s, 100);
+      CHECK(r.reached == r.reachable);
+      CHECK(r.reached + r.projected == r.cases);
+    }
+  }
+}
+
 TEST_CASE("contract: sensed map planners with a body, and potential_field on what it senses",
           "[contract]") {
   for (const char* planner : {"grid_astar", "visibility_graph"}) {
