@@ -18,7 +18,9 @@ class SimTime {
   static constexpr SimTime max() { return SimTime(std::numeric_limits<std::int64_t>::max()); }
 
   constexpr std::int64_t ns() const { return ns_; }
-  constexpr double seconds() const { return static_cast<double>(ns_) * 1e-9; }
+  // By division: a whole number of milliseconds reads back as its decimal (60 s, not
+  // 60.00000000000001 s).
+  constexpr double seconds() const { return static_cast<double>(ns_) / 1e9; }
 
   friend constexpr auto operator<=>(SimTime, SimTime) = default;
   friend constexpr SimTime operator+(SimTime a, SimTime b) { return SimTime(a.ns_ + b.ns_); }

@@ -8,6 +8,18 @@
 
 using namespace covsim;
 
+TEST_CASE("SimTime reads back as the decimal it is", "[time]") {
+  // Seconds by division: 60 s is 60, not 60.00000000000001, and every whole millisecond up
+  // to a day is the double nearest its decimal, as a user typed it.
+  CHECK(SimTime::from_seconds(60).seconds() == 60.0);
+  CHECK(SimTime::from_seconds(692.4).seconds() == 692.4);
+  CHECK(SimTime::from_ns(98'600'000'000).seconds() == 98.6);
+  for (std::int64_t ms = 0; ms <= 86'400'000; ms += 997) {
+    INFO(ms << " ms");
+    REQUIRE(SimTime::from_ns(ms * 1'000'000).seconds() == static_cast<double>(ms) / 1e3);
+  }
+}
+
 TEST_CASE("SimTime converts seconds to whole nanoseconds", "[time]") {
   CHECK(SimTime::from_seconds(1.5).ns() == 1'500'000'000);
   CHECK(SimTime::from_seconds(1e-9).ns() == 1);
