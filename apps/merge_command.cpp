@@ -12,6 +12,7 @@
 #include "analysis/sweep/sweep_runner.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "apps/output_guard.hpp"
 #include "scenarios/scenario_error.hpp"
 
 namespace covsim::app {
@@ -33,6 +34,7 @@ void add_merge_command(CLI::App& app) {
       ->capture_default_str();
   cmd->callback([opts] {
     std::vector<std::filesystem::path> dirs(opts->dirs.begin(), opts->dirs.end());
+    const auto lock = guard_output(opts->out);  // one writer at a time
     SweepSpec spec;
     std::vector<SweepResult> results;
     try {

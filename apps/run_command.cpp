@@ -18,6 +18,7 @@
 #include "apps/commands.hpp"
 #include "apps/figure_options.hpp"
 #include "apps/input_error.hpp"
+#include "apps/output_guard.hpp"
 #include "apps/plugin_loader.hpp"
 #include "apps/scenario_options.hpp"
 #include "core/fingerprint.hpp"
@@ -69,6 +70,8 @@ void add_run_command(CLI::App& app) {
             : fs::path("out") / fmt::format("{}-{}", fs::path(opts->scenario.file).stem().string(),
                                             *scenario.seed);
     if (!dir.has_filename()) dir = dir.parent_path();  // "out/run/"
+    // One writer at a time, before anything in or beside DIR is touched.
+    const auto lock = guard_output(dir);
     // The run folder appears whole or not at all: written as DIR.partial and put in place
     // at the end, over an existing DIR by one atomic exchange (what the earlier run wrote
     // goes; other files stay).

@@ -12,6 +12,7 @@
 #include "analysis/sweep/sweep_runner.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
+#include "apps/output_guard.hpp"
 #include "apps/plugin_loader.hpp"
 
 namespace covsim::app {
@@ -58,6 +59,8 @@ void add_sweep_command(CLI::App& app) {
       throw InputError(fmt::format("{} of {}", e.what(), opts->sweep));
     }
     const std::filesystem::path dir = opts->out;
+    // One writer at a time (a second process resuming the same folder is refused).
+    const auto lock = guard_output(dir);
     const std::vector<SweepResult> results =
         run_sweep(spec, dir, SweepOptions{opts->jobs, true, k, n, opts->keep_series});
     write_runs_csv(dir / "runs.csv", spec, results);

@@ -4,6 +4,7 @@
 
 #include "analysis/records/result_fields.hpp"
 #include "analysis/sweep/sweep_runner.hpp"
+#include "io/output_lock.hpp"
 #include "scenario_binding.hpp"
 
 namespace covsim::python {
@@ -33,6 +34,7 @@ void bind_sweep(py::module_& m) {
       "_sweep",
       [](const std::string& file, const std::string& out, std::size_t jobs, bool keep_series) {
         const SweepSpec spec = load_sweep(file);
+        const OutputLock lock(out);  // one writer per folder, as `covsim sweep`
         std::vector<SweepResult> results;
         {
           py::gil_scoped_release release;
