@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 fs::path output_lock_path(const fs::path& dir) {
   fs::path d = link_target(dir.lexically_normal());
   if (!d.has_filename()) d = d.parent_path();  // "out/run/"
-  return d.parent_path() / (d.filename().string() + ".lock");
+  // Hidden, so that a glob of the folders (shard-*) does not take it for one of them.
+  return d.parent_path() / ("." + d.filename().string() + ".lock");
 }
 
 OutputLock::OutputLock(const fs::path& dir) : path_(output_lock_path(dir)) {

@@ -13,11 +13,11 @@ rm -rf "$work"; mkdir -p "$work"; cd "$work"
 first=$!
 trap 'kill -9 $first 2>/dev/null || true' EXIT
 for _ in $(seq 1 300); do
-  [ -s same.lock ] && [ "$(cat same.lock)" = "$first" ] && break
+  [ -s .same.lock ] && [ "$(cat .same.lock)" = "$first" ] && break
   kill -0 $first 2>/dev/null || fail "the first run ended early: $(cat first.txt)"
   sleep 0.1
 done
-[ "$(cat same.lock)" = "$first" ] || fail "same.lock does not name the first run ($first)"
+[ "$(cat .same.lock)" = "$first" ] || fail ".same.lock does not name the first run ($first)"
 expect_refused() {  # what, then the command
   local what=$1; shift
   set +e; "$@" >/dev/null 2>err.txt; local rc=$?; set -e

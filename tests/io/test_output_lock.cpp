@@ -26,7 +26,7 @@ TEST_CASE("an output folder has one writer at a time", "[io][lock]") {
   const fs::path dir = lock_test_dir("out") / "run";
   {
     const OutputLock first(dir);
-    CHECK(first.path() == dir.parent_path() / "run.lock");
+    CHECK(first.path() == dir.parent_path() / ".run.lock");
     CHECK_FALSE(fs::exists(dir));  // nothing in DIR is touched
     std::ifstream in(first.path());
     std::string pid;
@@ -43,7 +43,7 @@ TEST_CASE("an output folder has one writer at a time", "[io][lock]") {
     CHECK_NOTHROW(OutputLock(dir.parent_path() / "other"));
   }
   // Released with its holder; the lock file stays.
-  CHECK(fs::exists(dir.parent_path() / "run.lock"));
+  CHECK(fs::exists(dir.parent_path() / ".run.lock"));
   CHECK_NOTHROW(OutputLock(dir));
   fs::remove_all(dir.parent_path().parent_path());
 }
@@ -53,7 +53,7 @@ TEST_CASE("an output folder named through a link is locked where the link points
   fs::create_directories(root / "real");
   fs::create_directory_symlink("real", root / "alias");
   const OutputLock held(root / "real");
-  CHECK(held.path() == root / "real.lock");
+  CHECK(held.path() == root / ".real.lock");
   CHECK_THROWS_AS(OutputLock(root / "alias"), OutputLocked);
   fs::remove_all(root.parent_path());
 }
