@@ -131,15 +131,9 @@ ParamSpec& ParamSpec::below(double v) {
   max_exclusive = true;
   return *this;
 }
-ParamSpec& ParamSpec::positive() {
-  return greater_than(0).worded("a positive number");
-}
-ParamSpec& ParamSpec::non_negative() {
-  return at_least(0).worded("a non-negative number");
-}
-ParamSpec& ParamSpec::probability() {
-  return at_least(0).at_most(1).worded("a probability in [0, 1]");
-}
+ParamSpec& ParamSpec::positive() { return greater_than(0); }
+ParamSpec& ParamSpec::non_negative() { return at_least(0); }
+ParamSpec& ParamSpec::probability() { return at_least(0).at_most(1); }
 ParamSpec& ParamSpec::worded(std::string expected_text) {
   expected = std::move(expected_text);
   return *this;
@@ -191,9 +185,9 @@ std::string check_param(const ParamSpec& s, const ParamValue& v) {
     const bool ok = (!s.min || (s.min_exclusive ? x > *s.min : x >= *s.min)) &&
                     (!s.max || (s.max_exclusive ? x < *s.max : x <= *s.max));
     if (ok) return "";
-    if (!s.expected.empty())
-      return fmt::format("expected {}, found {}", s.expected, number_text(x));
-    return fmt::format("expected {} {}, found {}", kind_text(s), bounds_text(s), number_text(x));
+    // Every bound, from the schema, with the unit: "expected a number > 0 and <= 1000 Hz".
+    return fmt::format("expected {} {}{}, found {}", s.expected.empty() ? kind_text(s) : s.expected,
+                       bounds_text(s), s.unit.empty() ? "" : " " + s.unit, number_text(x));
   };
   switch (s.kind) {
     case ParamKind::number:

@@ -47,8 +47,8 @@ struct ParamSpec {
   std::optional<double> min, max;  // numbers and integers
   bool min_exclusive = false, max_exclusive = false;
   std::vector<std::string> choices;
-  // What an error says is expected when the value is out of bounds ("a period between 1e-4
-  // and 1e6 s"); empty: the kind and the bounds ("a number > 0").
+  // What an error calls the value when it is out of bounds, before the bounds it states
+  // ("a fraction of the robots' spacing" > 0 and <= 1); empty: the kind ("a number").
   std::string expected;
   std::optional<ParamValue> default_value;  // a constant default
   std::string default_rule;                 // a default that depends on the run, in words
@@ -73,7 +73,7 @@ struct ParamSpec {
   ParamSpec& greater_than(double v);
   ParamSpec& at_most(double v);
   ParamSpec& below(double v);
-  // Bounds with their usual words in errors: > 0, >= 0, and [0, 1].
+  // The usual bounds: > 0, >= 0, and [0, 1].
   ParamSpec& positive();
   ParamSpec& non_negative();
   ParamSpec& probability();

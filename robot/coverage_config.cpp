@@ -257,7 +257,7 @@ ConfigKeys<CoverageConfig> convergence_keys() {
                                 "√(area of Ω / N) instead; a tolerance given explicitly wins")
                   .greater_than(0)
                   .at_most(1)
-                  .worded("a fraction of the robots' spacing, > 0 and at most 1")
+                  .worded("a fraction of the robots' spacing")
                   .derived("unset"),
               [](CoverageConfig& c, const ParamValue& v) {
                 config_value::from(v, c.spacing_tolerance);

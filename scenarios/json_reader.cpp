@@ -204,6 +204,12 @@ std::uint64_t JsonValue::unsigned_integer() const {
   if (value_->is_number_unsigned()) return value_->get<std::uint64_t>();
   if (value_->is_number_integer() && value_->get<std::int64_t>() >= 0)
     return value_->get<std::uint64_t>();
+  // 1e9 is a whole number written as JSON writes large ones.
+  if (value_->is_number_float()) {
+    const double v = value_->get<double>();
+    if (v >= 0.0 && v < 18446744073709551616.0 && std::floor(v) == v)
+      return static_cast<std::uint64_t>(v);
+  }
   fail("expected a non-negative integer, found " +
        (value_->is_number() ? value_->dump() : kind(*value_)));
 }

@@ -85,7 +85,7 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
   expect_error(
       "{" + kSquare +
           R"(, "density": {"type": "gaussian_mixture", "components": [{"mean": [1, 1], "sigma": -1, "weight": 1}]}})",
-      "$.density.components[0].sigma: expected a number > 0, found -1");
+      "$.density.components[0].sigma: expected a number > 0 m, found -1");
   expect_error(
       "{" + kSquare +
           R"(, "density": {"type": "gaussian_mixture", "components": [{"mean": [1, 1], "sigma": 1, "weight": 1, "colour": 2}]}})",
@@ -103,9 +103,9 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
   expect_error("{\n" + kSquare + ",\n" + d + ",,}", "bad.json:3:");
   expect_error("[1, 2]", "$: expected an object, found an array");
   expect_error("{" + kSquare + ", " + d + R"(, "sensor": {"range": -1}})",
-               "$.sensor.range: expected a non-negative number");
+               "$.sensor.range: expected a number >= 0 m, found -1");
   expect_error("{" + kSquare + ", " + d + R"(, "sensor": {"dropout": 1.5}})",
-               "$.sensor.dropout: expected a probability");
+               "$.sensor.dropout: expected a number >= 0 and <= 1, found 1.5");
   expect_error("{" + kSquare + ", " + d + R"(, "sensor": {"noise": {"sd": 1}}})",
                "$.sensor.noise.sd: unknown key");
   expect_error("{" + kSquare + ", " + d + R"(, "network": {"loss": {"model": "bernoulli"}}})",
@@ -119,13 +119,13 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
   expect_error("{" + kSquare + ", " + d + R"(, "network": {"delay": {"model": "gamma"}}})",
                "$.network.delay.model: expected one of");
   expect_error("{" + kSquare + ", " + d + R"(, "network": {"acquire": -1}})",
-               "$.network.acquire: expected a non-negative number");
+               "$.network.acquire: expected a number >= 0 and <= 1000000 s, found -1");
   expect_error("{" + kSquare + ", " + d + R"(, "network": {"acquire_timeout": 1e9}})",
-               "$.network.acquire_timeout: expected a non-negative number of seconds, at most 1e6");
+               "$.network.acquire_timeout: expected a number >= 0 and <= 1000000 s, found 1000000000");
   expect_error("{" + kSquare + ", " + d + R"(, "loops": {"loop1_period": 1}})",
                "$.loops.loop1_period: loop1_period applies to");
   expect_error("{" + kSquare + ", " + d + R"(, "loops": {"mode": "periodic", "loop2_period": 0}})",
-               "$.loops.loop2_period: expected a period between 0.0001 and 1e6 s, found 0");
+               "$.loops.loop2_period: expected a number >= 0.0001 and <= 1000000 s, found 0");
 }
 
 TEST_CASE("planners and controllers with their parameters", "[scenario]") {
@@ -178,7 +178,7 @@ TEST_CASE("planners and controllers with their parameters", "[scenario]") {
                "$.planner.grid_astar.resolution: \"resolution\" is set twice");
   expect_error(
       "{" + kSquare + ", " + d + R"(, "planner": {"type": "grid_astar", "resolution": 0}})",
-      "$.planner.resolution: expected a number > 0, found 0");
+      "$.planner.resolution: expected a number > 0 m, found 0");
   expect_error(
       "{" + kSquare + ", " + d + R"(, "planner": {"type": "grid_astar", "resolution": 1e-6}})",
       "$.planner.resolution: resolution too fine");
@@ -218,8 +218,8 @@ TEST_CASE("tolerances may be a fraction of the robots' spacing", "[scenario]") {
   expect_error("{" + kSquare + ", " + d + R"(, "convergence": {"spacing_tolerance": 2}})",
                "$.convergence.spacing_tolerance: expected a fraction of the robots' spacing");
   expect_error("{" + kSquare + ", " + d + R"(, "convergence": {"spacing_tolerance": 0}})",
-               "$.convergence.spacing_tolerance: expected a fraction of the robots' spacing, > 0 "
-               "and at most 1, found 0");
+               "$.convergence.spacing_tolerance: expected a fraction of the robots' spacing > 0 "
+               "and <= 1, found 0");
 }
 
 TEST_CASE("the projection policy belongs to the controller section, whatever its type",
@@ -432,7 +432,7 @@ TEST_CASE("sizes and periods beyond the stated limits are refused, naming the pl
   // Periods below 1e-4 s, and runs of more than 1e8 motion steps.
   expect_error(
       "{" + kSquare + R"(, "density": {"type": "uniform"}, "loops": {"loop2_period": 1e-9}})",
-      "$.loops.loop2_period: expected a period between 0.0001 and 1e6 s");
+      "$.loops.loop2_period: expected a number >= 0.0001 and <= 1000000 s, found 1e-09");
   expect_error(
       "{" + kSquare + R"(, "density": {"type": "uniform"}, "loops": {"loop2_period": 0.001},
       "convergence": {"max_time": 200000}})",
@@ -453,7 +453,7 @@ TEST_CASE("sizes and periods beyond the stated limits are refused, naming the pl
   CHECK_NOTHROW(
       load_scenario(write("raised.json", many + R"(, "limits": {"trajectory_rows": 1e8}})")));
   expect_error(many + R"(, "limits": {"trajectory_rows": -1}})",
-               "$.limits.trajectory_rows: expected a positive number");
+               "$.limits.trajectory_rows: expected a number > 0 rows, found -1");
   // At the limits themselves: accepted.
   CHECK_NOTHROW(load_scenario(write("big.json", R"({"environment": {"outer": [[-1e6, -1e6],
       [1e6, -1e6], [1e6, 1e6], [-1e6, 1e6]]}, "density": {"type": "uniform"}})")));

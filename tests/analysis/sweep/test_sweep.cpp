@@ -216,7 +216,8 @@ TEST_CASE("a failing run is recorded and the sweep goes on", "[sweep]") {
   CHECK_FALSE(results[0].error);
   CHECK(results[0].converged());
   REQUIRE(results[1].error);
-  CHECK_THAT(*results[1].error, Catch::Contains("$.robots.max_speed: expected a positive number"));
+  CHECK_THAT(*results[1].error,
+             Catch::Contains("$.robots.max_speed: expected a number > 0 m/s, found -1"));
   write_runs_csv(dir / "out" / "runs.csv", spec, results);
   write_summary_csv(dir / "out" / "summary.csv", spec, results);
   std::ifstream in(dir / "out" / "summary.csv");
