@@ -46,6 +46,14 @@ inline double norm(Vec2 a) {
 inline double distance(Vec2 a, Vec2 b) {
   return norm(a - b);
 }
+// How far distance(a, b) may be off through the rounding of a and b's coordinates (a few
+// units in the last place of the largest): what a check of a length against a bound allows,
+// so that a step of 1e-7 m between points 6 m from the origin passes as 1e-7 m.
+inline double distance_rounding(Vec2 a, Vec2 b) {
+  const double m = std::fmax(std::fmax(std::fabs(a.x), std::fabs(a.y)),
+                             std::fmax(std::fabs(b.x), std::fabs(b.y)));
+  return 8.0 * 2.220446049250313e-16 * m;  // 8 × DBL_EPSILON × m
+}
 // distance(a, b) <= r, the same answer bit for bit, without the hypot when a coordinate's
 // difference alone exceeds r (hypot is never below either coordinate's magnitude): most
 // tolerance tests in sensing and planning are of points far apart.

@@ -460,8 +460,9 @@ PlanStep CoverageController::planner_step(const Kernel& k, Robot& r) {
           fmt::format("a step must be a finite point, found ({}, {})", step.next.x, step.next.y));
     return step;
   });
-  // A robot moves at most its step length per planner step, whatever the planner asks.
-  if (!(distance(known, s.next) <= step_ * (1.0 + 1e-9))) {
+  // A robot moves at most its step length per planner step, whatever the planner asks (up to
+  // the rounding of the positions compared, which a tiny step may not exceed relatively).
+  if (!(distance(known, s.next) <= step_ * (1.0 + 1e-9) + distance_rounding(known, s.next))) {
     throw std::runtime_error(fmt::format(
         "robot {}'s planner {} proposed a step of {} m at t={} s; the step length is {} m", r.id,
         r.planner->name(), distance(known, s.next), k.now().seconds(), step_));

@@ -268,3 +268,19 @@ TEST_CASE("a 40-robot maze with periodic loop 1 converges", "[liveness][slow]") 
   CHECK(check.outside == 0);
   CHECK(out.robots.size() == 40);
 }
+
+TEST_CASE("no valid max_speed fails a run on rounding", "[liveness]") {
+  // Robots held nearly still (max_speed 1e-6 m/s, a step of 1e-7 m, 6 m from the origin)
+  // stopped as a planner failure: a step 2e-16 m over its length. Over the key's range, from
+  // 1e-9 to 1e3 m/s, a second of office runs.
+  for (const char* speed : {"1e-9", "1e-7", "1e-6", "3e-6", "1e-3", "1", "1e3"}) {
+    INFO("max_speed " << speed);
+    const std::vector<ScenarioOverride> set{
+        parse_override(std::string("robots.max_speed=") + speed),
+        parse_override("convergence.max_time=1")};
+    const auto out =
+        run_coverage(load_scenario(std::string(COVSIM_SOURCE_DIR) + "/scenarios/office.json", set));
+    CHECK_FALSE(out.planner_failure);
+    CHECK(out.sim_time.seconds() == 1.0);
+  }
+}
