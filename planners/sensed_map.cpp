@@ -162,13 +162,32 @@ bool SensedMap::leaves_free(Vec2 p, Vec2 d) const {
   const auto left = [&](const Piece& s) { return cross(s.b - s.a, d) >= 0.0; };
   const Piece *in = nullptr, *out = nullptr;
   const double tol2 = tol_ * tol_;
+  const std::uint32_t c = cell_of(p);
+  const auto for_each_near = [&](auto&& f) {
+    ++query_;
+    for (std::int32_t dj = -1; dj <= 1; ++dj)
+      for (std::int32_t di = -1; di <= 1; ++di) {
+        const std::int32_t i = column(c) + di, j = row(c) + dj;
+        if (i < 0 || j < 0 || i >= nx_ || j >= ny_) continue;
+        for (const std::uint32_t k : in_cell_[index(i, j)])
+          if (seen_[k] != query_) {
+            seen_[k] = query_;
+            f(pieces_[k]);
+          }
+      }
+  };
   // Within the noise of a noisy piece's interior is on it (it may pass between the robot and
-  // the free space it stands in).
+  // the free space it stands in), unless p touches a wall held exactly: that wall tells the
+  // free side (at a thin wall's end the noisy pieces of both faces would leave no way out).
+  bool touching = false;
+  if (spread_ > 0.0)
+    for_each_near([&](const Piece& s) {
+      touching = touching || (s.exact && norm2(p - project_to_segment(p, s.a, s.b).point) <= tol2);
+    });
   const auto near2 = [&](const Piece& s, const SegmentProjection& pr) {
-    return !s.exact && pr.t > 0.0 && pr.t < 1.0 ? merge_ * merge_ : tol2;
+    return !s.exact && !touching && pr.t > 0.0 && pr.t < 1.0 ? merge_ * merge_ : tol2;
   };
   bool ok = true;
-  const std::uint32_t c = cell_of(p);
   ++query_;
   for (std::int32_t dj = -1; dj <= 1 && ok; ++dj) {
     for (std::int32_t di = -1; di <= 1 && ok; ++di) {

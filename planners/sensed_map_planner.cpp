@@ -1,5 +1,7 @@
 #include "planners/sensed_map_planner.hpp"
 
+#include <algorithm>
+
 namespace covsim {
 
 std::shared_ptr<SensedMap> sensed_map_for(const Environment& env, double resolution,
@@ -12,7 +14,9 @@ std::shared_ptr<SensedMap> sensed_map_for(const Environment& env, double resolut
 
 void SensedMapPlanner::set_goal(Vec2 goal) {
   goal_ = goal;
-  planned_ = projecting_ = settling_ = false;
+  planned_ = projecting_ = settling_ = escaping_ = false;
+  escapes_ = 0;
+  proposed_from_ = Vec2{INFINITY, INFINITY};
   slide_.reset();
   status_ = PlanStatus::moving;
   follower_.clear();
@@ -32,9 +36,40 @@ std::optional<std::vector<Vec2>> SensedMapPlanner::route(Vec2 start, Vec2 goal) 
   return plan(start, *from, goal, *to);
 }
 
+bool SensedMapPlanner::escape(Vec2 x) {
+  // The free cell whose centre is nearest, within two rings, whatever the map says of the
+  // way there, but for those tried from here already: the motion stops at a true wall.
+  if (++escapes_ > kMaxEscapes) return false;
+  if (escape_tried_.empty() || distance(x, escape_from_) > tol_) {
+    escape_tried_.clear();
+    escape_from_ = x;
+  }
+  const std::uint32_t c = map_->cell_of(x);
+  std::optional<std::uint32_t> best;
+  for (std::int32_t j = map_->row(c) - 2; j <= map_->row(c) + 2; ++j)
+    for (std::int32_t i = map_->column(c) - 2; i <= map_->column(c) + 2; ++i) {
+      const std::uint32_t k = map_->index(i, j);
+      if (!map_->free(i, j) || distance(x, map_->center(k)) <= tol_ ||
+          std::find(escape_tried_.begin(), escape_tried_.end(), k) != escape_tried_.end())
+        continue;
+      if (!best || distance(x, map_->center(k)) < distance(x, map_->center(*best))) best = k;
+    }
+  if (!best) return false;
+  escape_tried_.push_back(*best);
+  follower_.assign({x, map_->center(*best)});
+  escaping_ = true;
+  status_ = PlanStatus::moving;
+  return true;
+}
+
 void SensedMapPlanner::replan(Vec2 x) {
   if (planned_) ++replans_;
   planned_ = true;
+  escaping_ = false;
+  // On a noisy map the robot may stand where no leg leaves by the map (noisy pieces of two
+  // faces round a corner it stopped near): that says nothing of the goal. It first moves to
+  // the nearest free cell.
+  if (map_->spread() > 0.0 && !map_->entry(x) && escape(x)) return;
   if (!projecting_) {
     if (auto path = route(x, goal_)) {
       follower_.assign(std::move(*path));
@@ -121,9 +156,24 @@ PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
   const bool ended = planned_ && follower_.done() && !follower_.path().empty();
   const double short_by = ended ? distance(x, follower_.path().back()) : INFINITY;
   const bool stopped = short_by > tol_ && ended;
-  // On a noisy map the end may lie behind the wall that stopped the robot, within the noise.
-  if (map_->spread() > 0.0 && short_by <= 2.0 * map_->merge()) return start_settling(r, max_step);
-  if (!planned_ || stopped || (changed && (nearer_wall() || !ahead_clear(x, first_new)))) replan(x);
+  // Held where it stood by a wall it does not touch (a corner met within rounding): it
+  // moves off to a free cell, or settles by touch if none is left to try.
+  const bool held = map_->spread() > 0.0 && distance(x, proposed_from_) <= tol_;
+  if (held && !escaping_) {
+    if (!escape(x)) return start_settling(r, max_step);
+    proposed_from_ = x;
+    return PlanStep{follower_.advance(x, max_step, tol_), status_};
+  }
+  if (escaping_ && (ended || held)) {
+    // Out, or held where it stood: plan again (another cell, if still no leg leaves).
+    escaping_ = false;
+    replan(x);
+  } else if (map_->spread() > 0.0 && short_by <= 2.0 * map_->merge()) {
+    // On a noisy map the end may lie behind the wall that stopped the robot, within the noise.
+    return start_settling(r, max_step);
+  } else if (!planned_ || stopped || (changed && (nearer_wall() || !ahead_clear(x, first_new)))) {
+    replan(x);
+  }
   // A noisy map may show no way out of where the robot stands (walls seen a little too near,
   // round it): it settles by touch from there.
   if (status_ == PlanStatus::stalled && map_->spread() > 0.0) return start_settling(r, max_step);
@@ -133,11 +183,13 @@ PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
   // robot stands there and settled by touch.
   if (follower_.done() && distance(x, next) <= std::max(r.range, tol_) && map_->spread() == 0.0)
     status_ = arrival_;
+  proposed_from_ = distance(x, next) > tol_ ? x : Vec2{INFINITY, INFINITY};
   return PlanStep{next, status_};
 }
 
 PlanStep SensedMapPlanner::start_settling(const SensorReading& r, double max_step) {
   status_ = PlanStatus::moving;
+  held_untouched_ = 0;
   settling_ = true;
   slide_.reset();
   tried_from_ = Vec2{INFINITY, INFINITY};
@@ -164,15 +216,29 @@ PlanStep SensedMapPlanner::settle(const SensorReading& r, double max_step) {
     slide_.reset();
     return toward(goal_);
   }
+  const std::optional<Vec2> sliding = slide_;
   slide_.reset();
   std::optional<Vec2> closest;
   for (const ContactEdge& c : r.contacts) {
     const Vec2 q = project_to_segment(goal_, c.a, c.b).point;
     if (!closest || distance(goal_, q) < distance(goal_, *closest)) closest = q;
   }
-  if (!closest) return toward(goal_);
+  if (!closest) {
+    // Held by nothing it touches, twice: it cannot tell where to go.
+    if (held_untouched_++ > 0) {
+      status_ = PlanStatus::stalled;
+      return PlanStep{x, status_};
+    }
+    return toward(goal_);
+  }
+  held_untouched_ = 0;
   if (distance(x, *closest) <= tol_) {
     status_ = PlanStatus::projected;
+    return PlanStep{x, status_};
+  }
+  if (sliding && distance(*sliding, *closest) <= tol_) {
+    // Held on the way along the wall to the same point: it cannot get there.
+    status_ = PlanStatus::stalled;
     return PlanStep{x, status_};
   }
   slide_ = closest;

@@ -19,6 +19,7 @@
 // slides to the point of the touched walls closest to the goal and tries again from there,
 // and reports `projected` where the goal lies straight into the walls it touches. The
 // distance to the goal only falls on the way, so the settling ends.
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -63,6 +64,9 @@ class SensedMapPlanner : public Planner {
   // On the way to a projection: whether a wall that came into view since it was chosen lies
   // nearer the goal.
   bool nearer_wall() const;
+  // On a noisy map: a path to the nearest free cell, for a robot no leg leaves by the map;
+  // whether there is one.
+  bool escape(Vec2 x);
   // A step of the settling by touch (above), and the first.
   PlanStep settle(const SensorReading& r, double max_step);
   PlanStep start_settling(const SensorReading& r, double max_step);
@@ -79,8 +83,18 @@ class SensedMapPlanner : public Planner {
   std::size_t landing_pieces_ = 0;  // the map's added stretches when it was chosen
   // Settling by touch: whether it is, where the last step was proposed from, and where it
   // slides to along the walls touched (none: straight for the goal).
-  bool settling_ = false;
+  bool settling_ = false, escaping_ = false;
   Vec2 tried_from_;
+  // Where the last step that should have moved the robot was proposed from, on a noisy map.
+  Vec2 proposed_from_{INFINITY, INFINITY};
+  // Settling: steps held by no wall it touches.
+  int held_untouched_ = 0;
+  // Escaping: where from, the cells tried from there, and how often for this goal (past a
+  // hundred, the robot settles by touch instead: escapes could go round in a cycle).
+  static constexpr int kMaxEscapes = 100;
+  int escapes_ = 0;
+  Vec2 escape_from_;
+  std::vector<std::uint32_t> escape_tried_;
   std::optional<Vec2> slide_;
 };
 
