@@ -131,9 +131,15 @@ ParamSpec& ParamSpec::below(double v) {
   max_exclusive = true;
   return *this;
 }
-ParamSpec& ParamSpec::positive() { return greater_than(0); }
-ParamSpec& ParamSpec::non_negative() { return at_least(0); }
-ParamSpec& ParamSpec::probability() { return at_least(0).at_most(1); }
+ParamSpec& ParamSpec::positive() {
+  return greater_than(0);
+}
+ParamSpec& ParamSpec::non_negative() {
+  return at_least(0);
+}
+ParamSpec& ParamSpec::probability() {
+  return at_least(0).at_most(1);
+}
 ParamSpec& ParamSpec::worded(std::string expected_text) {
   expected = std::move(expected_text);
   return *this;

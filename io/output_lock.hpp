@@ -1,9 +1,9 @@
 #pragma once
 // One writer per output folder. A run, a sweep or a merge holds an exclusive flock(2) on
-// ".DIR.lock", a hidden file beside DIR (out/.run.lock for out/run), for as long as it writes DIR. The kernel releases the lock
-// when the process ends, however it ends (kill -9 included), so no stale lock outlives its
-// holder; the file itself stays, holding the last holder's process id (removing it could
-// let two writers lock two different files of one name).
+// ".DIR.lock", a hidden file beside DIR (out/.run.lock for out/run), for as long as it writes DIR.
+// The kernel releases the lock when the process ends, however it ends (kill -9 included), so no
+// stale lock outlives its holder; the file itself stays, holding the last holder's process id
+// (removing it could let two writers lock two different files of one name).
 #include <filesystem>
 #include <stdexcept>
 #include <string>

@@ -120,8 +120,9 @@ TEST_CASE("scenario errors name the file, the JSON path and what was expected", 
                "$.network.delay.model: expected one of");
   expect_error("{" + kSquare + ", " + d + R"(, "network": {"acquire": -1}})",
                "$.network.acquire: expected a number >= 0 and <= 1000000 s, found -1");
-  expect_error("{" + kSquare + ", " + d + R"(, "network": {"acquire_timeout": 1e9}})",
-               "$.network.acquire_timeout: expected a number >= 0 and <= 1000000 s, found 1000000000");
+  expect_error(
+      "{" + kSquare + ", " + d + R"(, "network": {"acquire_timeout": 1e9}})",
+      "$.network.acquire_timeout: expected a number >= 0 and <= 1000000 s, found 1000000000");
   expect_error("{" + kSquare + ", " + d + R"(, "loops": {"loop1_period": 1}})",
                "$.loops.loop1_period: loop1_period applies to");
   expect_error("{" + kSquare + ", " + d + R"(, "loops": {"mode": "periodic", "loop2_period": 0}})",
