@@ -75,7 +75,8 @@ void add_sweep_command(CLI::App& app) {
     fmt::print("{} runs ({} settings x {} seeds{}): {} converged, {} failed\n", results.size(),
                spec.settings.size(), spec.seeds.size(),
                n > 1 ? fmt::format(", shard {}/{}", k, n) : "", converged, failed);
-    fmt::print("wrote {0}/runs.csv, {0}/summary.csv and {1} plots\n", dir.string(), plots.size());
+    fmt::print("wrote {0}/runs.csv, {0}/summary.csv, {1} plots and {0}/index.html\n", dir.string(),
+               plots.size());
     if (failed > 0)
       throw std::runtime_error(
           fmt::format("{} runs failed; their errors are in {}/runs.csv", failed, dir.string()));

@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 
+#include "analysis/figures/sweep_index.hpp"
 #include "analysis/records/result_fields.hpp"
 #include "analysis/sweep/statistics.hpp"
 #include "analysis/sweep/sweep_tables.hpp"
@@ -19,6 +20,23 @@ namespace covsim {
 namespace fs = std::filesystem;
 
 namespace {
+// Whether a measure takes more than one value over the sweep's runs: one that is the same
+// (or not taken) in every run (a radio's measure without a radio, a count that stays 0)
+// gets no chart.
+bool differs(const std::vector<SweepResult>& results, const std::string& metric) {
+  std::optional<double> first;
+  for (const SweepResult& r : results) {
+    if (r.error) continue;
+    const double y = r.number(metric);
+    if (std::isnan(y)) continue;
+    if (!first)
+      first = y;
+    else if (y != *first)
+      return true;
+  }
+  return false;
+}
+
 std::string run_field_unit(const std::string& name) {
   for (const auto& f : run_fields()) {
     if (f.name == name) return f.unit;
@@ -59,7 +77,7 @@ std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<Sw
     }
     if (!numeric || values.size() < 2 || (group_index && *group_index == p)) continue;
     for (const std::string& metric : sweep_metrics()) {
-      if (metric == "wall_time") continue;
+      if (metric == "wall_time" || !differs(results, metric)) continue;
       // One line per value of the grouping parameter (pooling the others), or else per
       // combination of the other varying parameters; points at this parameter's values.
       std::map<std::string, std::map<double, std::vector<double>>> lines;
@@ -115,6 +133,7 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
     f.commit();
     written.push_back(file);
   }
+  write_sweep_index(dir, spec, results, written);
   return written;
 }
 
