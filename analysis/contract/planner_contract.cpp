@@ -176,7 +176,8 @@ ContractResult run_case(const ContractSetup& setup, const ContractMap& map, std:
     if (setup.noise_sigma > 0.0)
       add_range_noise(reading, noise, setup.noise_sigma, env.tolerance());
     const PlanStep s = planner->step(reading, setup.step);
-    if (distance(x, s.next) > setup.step * (1.0 + 1e-12) + distance_rounding(x, s.next))
+    if (distance(x, s.next) >
+        setup.step * (1.0 + 1e-12) + std::max(1e-12, distance_rounding(x, s.next)))
       fail(fmt::format("step {}: proposed a step of {} m", res.steps, distance(x, s.next)));
     const Vec2 next = env.advance(x, s.next);
     // Into a wall the sensor showed (within range, or touching): the planner's own fault. A
