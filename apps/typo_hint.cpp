@@ -52,8 +52,10 @@ std::optional<std::string> typo_hint(CLI::App& app, int argc, const char* const*
     if (word.substr(0, 2) != "--") continue;
     word = word.substr(0, word.find('='));
     if (command->get_option_no_throw(std::string(word)) != nullptr) continue;
-    if (const auto near = closest_spelling(word, names))
-      return fmt::format("'{}' is no option of covsim {}: did you mean '{}'?", word, first, *near);
+    // Every option as near ("--seeed": '--seed' or '--speed').
+    if (const auto near = closest_spellings(word, names); !near.empty())
+      return fmt::format("'{}' is no option of covsim {}: did you mean '{}'?", word, first,
+                         fmt::join(near, "' or '"));
   }
   return std::nullopt;
 }

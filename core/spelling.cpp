@@ -25,24 +25,29 @@ std::size_t spelling_distance(std::string_view a, std::string_view b) {
   return previous[n];
 }
 
-std::optional<std::string> closest_spelling(std::string_view word,
-                                            const std::vector<std::string>& names) {
+std::vector<std::string> closest_spellings(std::string_view word,
+                                           const std::vector<std::string>& names) {
   const std::size_t allowed = std::max<std::size_t>(1, word.size() / 3);
-  std::optional<std::string> best;
+  std::vector<std::string> best;
   std::size_t best_distance = allowed + 1;
-  bool tie = false;
   for (const std::string& name : names) {
     const std::size_t d = spelling_distance(word, name);
+    if (d == 0) return {};  // the word itself: no typo
     if (d < best_distance) {
-      best = name;
+      best = {name};
       best_distance = d;
-      tie = false;
-    } else if (d == best_distance && best && *best != name) {
-      tie = true;
+    } else if (d == best_distance && std::find(best.begin(), best.end(), name) == best.end()) {
+      best.push_back(name);
     }
   }
-  if (tie || best_distance == 0) return std::nullopt;
   return best;
+}
+
+std::optional<std::string> closest_spelling(std::string_view word,
+                                            const std::vector<std::string>& names) {
+  const std::vector<std::string> best = closest_spellings(word, names);
+  if (best.size() != 1) return std::nullopt;
+  return best.front();
 }
 
 }  // namespace covsim

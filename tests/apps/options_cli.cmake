@@ -180,4 +180,6 @@ bad("--update-docs without markers" "no-markers.md: no lines" list --update-docs
 bad("a mistyped command" "'rnu' is no covsim command: did you mean 'run'\\?" rnu ${u})
 bad("a mistyped option" "'--trac' is no option of covsim run: did you mean '--trace'\\?"
     run ${u} --trac t.trace)
+bad("a mistyped option near two" "'--seeed' is no option of covsim run: did you mean '--seed' or '--speed'\\?"
+    run ${u} --seeed 3)
 bad("an unknown command" "the commands are cells, describe" frobnicate)

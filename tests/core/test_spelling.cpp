@@ -24,3 +24,11 @@ TEST_CASE("the closest name is offered only when it is a likely typo", "[spellin
   // Two names equally near: no guess.
   CHECK_FALSE(closest_spelling("ab", {"aa", "bb"}));
 }
+
+TEST_CASE("every name as near is offered when several are", "[spelling]") {
+  const std::vector<std::string> options{"--seed", "--set", "--speed", "--out"};
+  CHECK(closest_spellings("--seeed", options) == std::vector<std::string>{"--seed", "--speed"});
+  CHECK(closest_spellings("--outt", options) == std::vector<std::string>{"--out"});
+  CHECK(closest_spellings("--seed", options).empty());  // nothing to correct
+  CHECK(closest_spellings("--frobnicate", options).empty());
+}
