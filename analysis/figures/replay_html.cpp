@@ -1,4 +1,5 @@
 #include "analysis/figures/replay_html.hpp"
+#include "analysis/figures/html_escape.hpp"
 
 #include <fmt/format.h>
 
@@ -22,30 +23,6 @@ std::string script_string(const std::string& s) {
   std::string out = nlohmann::json(s).dump();
   for (std::size_t at = out.find("</"); at != std::string::npos; at = out.find("</", at + 3))
     out.replace(at, 2, "<\\/");
-  return out;
-}
-
-// Text safe inside HTML elements.
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
   return out;
 }
 

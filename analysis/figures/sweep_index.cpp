@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 
+#include "analysis/figures/html_escape.hpp"
 #include "analysis/sweep/sweep_tables.hpp"
 #include "io/atomic_file.hpp"
 
@@ -13,29 +14,6 @@ namespace covsim {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string escaped(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 // The fields of one CSV line (RFC 4180 quotes).
 std::vector<std::string> csv_fields(const std::string& line) {
@@ -72,7 +50,7 @@ std::string summary_table(const fs::path& file) {
     html += "<tr>";
     const char* cell = head ? "th" : "td";
     for (const std::string& f : csv_fields(line))
-      html += fmt::format("<{0}>{1}</{0}>", cell, escaped(f));
+      html += fmt::format("<{0}>{1}</{0}>", cell, html_escape(f));
     html += "</tr>\n";
   }
   return html + "</table></div>\n";
@@ -90,18 +68,18 @@ void write_sweep_index(const fs::path& dir, const SweepSpec& spec,
   }
   std::string settings = "<table id=\"settings\">\n<tr><th>setting</th>";
   for (const std::string& p : spec.parameters)
-    settings += fmt::format("<th>{}</th>", escaped(p));
+    settings += fmt::format("<th>{}</th>", html_escape(p));
   settings += "</tr>\n";
   for (std::size_t s = 0; s < spec.settings.size(); ++s) {
     settings += fmt::format("<tr><td>{}</td>", s);
     for (const auto& v : spec.settings[s])
-      settings += fmt::format("<td>{}</td>", escaped(csv_value(v)));
+      settings += fmt::format("<td>{}</td>", html_escape(csv_value(v)));
     settings += "</tr>\n";
   }
   settings += "</table>\n";
   std::string figures;
   for (const fs::path& c : charts) {
-    const std::string name = escaped(c.filename().string());
+    const std::string name = html_escape(c.filename().string());
     const std::string shown =
         c.extension() == ".pdf"
             ? fmt::format(
@@ -110,9 +88,9 @@ void write_sweep_index(const fs::path& dir, const SweepSpec& spec,
                   name)
             : fmt::format("<img src=\"{0}\" alt=\"{0}\">", name);
     figures += fmt::format("<figure class=\"chart\">{}<figcaption>{}</figcaption></figure>\n",
-                           shown, escaped(c.stem().string()));
+                           shown, html_escape(c.stem().string()));
   }
-  const std::string title = escaped(dir.filename().string());
+  const std::string title = html_escape(dir.filename().string());
   AtomicFile f(dir / "index.html");
   f.stream() << fmt::format(
       R"(<!DOCTYPE html>
@@ -137,7 +115,7 @@ with its 95% confidence band, the runs as dots.</p>
 {10}</div>
 </body></html>
 )",
-      title, escaped(spec.source), spec.settings.size(), spec.seeds.size(), results.size(),
+      title, html_escape(spec.source), spec.settings.size(), spec.seeds.size(), results.size(),
       converged, failed, settings, summary_table(dir / "summary.csv"), charts.size(), figures);
   f.commit();
 }
