@@ -10,6 +10,7 @@
 #include "analysis/figures/sweep_charts.hpp"
 #include "analysis/sweep/sweep_folder.hpp"
 #include "analysis/sweep/sweep_runner.hpp"
+#include "analysis/sweep/sweep_tables.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/output_guard.hpp"
@@ -47,6 +48,8 @@ void add_merge_command(CLI::App& app) {
       throw InputError(e.what());
     }
     write_sweep_plots(opts->out, spec, results, opts->group, *parse_figure_format(opts->format));
+    for (const std::string& line : identical_seed_warnings(spec, results))
+      fmt::print(stderr, "covsim: warning: {}\n", line);
     fmt::print("merged {} runs from {} folders into {}/runs.csv and {}/summary.csv\n",
                results.size(), dirs.size(), opts->out, opts->out);
   });

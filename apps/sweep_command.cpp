@@ -10,6 +10,7 @@
 
 #include "analysis/figures/sweep_charts.hpp"
 #include "analysis/sweep/sweep_runner.hpp"
+#include "analysis/sweep/sweep_tables.hpp"
 #include "apps/commands.hpp"
 #include "apps/input_error.hpp"
 #include "apps/output_guard.hpp"
@@ -67,6 +68,8 @@ void add_sweep_command(CLI::App& app) {
     write_summary_csv(dir / "summary.csv", spec, results);
     const auto plots =
         write_sweep_plots(dir, spec, results, opts->group, *parse_figure_format(opts->format));
+    for (const std::string& line : identical_seed_warnings(spec, results))
+      fmt::print(stderr, "covsim: warning: {}\n", line);
     std::size_t failed = 0, converged = 0;
     for (const SweepResult& r : results) {
       failed += r.error ? 1 : 0;

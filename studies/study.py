@@ -235,6 +235,8 @@ def parameter(value):
 # The measures of summary.csv a table can show: name -> (header, cell(row, robots)).
 MEASURES = {
     "runs": ("runs", lambda row, _r: f"{row['runs']:.0f}"),
+    # The statistics count these: runs with one fingerprint count once.
+    "distinct_runs": ("distinct runs", lambda row, _r: f"{row['distinct_runs']:.0f}"),
     "converged": ("converged", lambda row, _r: percent(row, "converged_rate")),
     "sim_time": ("time to converge [s]", lambda row, _r: median_iqr(row, "sim_time", "%.1f")),
     "time_to_1_percent": ("time to 1% of the final cost [s]",

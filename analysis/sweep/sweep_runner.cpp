@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <optional>
 #include <system_error>
@@ -74,6 +75,15 @@ SweepResult execute(const SweepSpec& spec, const SweepRun& run, const fs::path& 
   return r;
 }
 
+// A wall-clock duration as a person reads it: "0.4 s", "12 s", "3 min 20 s", "2 h 05 min".
+std::string duration_text(double seconds) {
+  if (seconds < 9.95) return fmt::format("{:.1f} s", seconds);
+  const auto s = static_cast<long long>(std::llround(seconds));
+  if (s < 60) return fmt::format("{} s", s);
+  if (s < 3600) return fmt::format("{} min {:02} s", s / 60, s % 60);
+  return fmt::format("{} h {:02} min", s / 3600, (s % 3600) / 60);
+}
+
 // Progress on stderr: one line rewritten in place on a terminal, else one line per run.
 class ProgressLine {
  public:
@@ -84,10 +94,16 @@ class ProgressLine {
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const std::size_t ran = finished - before_;
-    const double left =
-        ran > 0 ? elapsed / static_cast<double>(ran) * static_cast<double>(total_ - finished) : 0.0;
-    const std::string line = fmt::format("sweep: {}/{} runs done, {} failed, about {:.0f} s left",
-                                         finished, total_, failed, left);
+    // The time left from the runs of this process alone (runs found done took no time); none
+    // before one has run.
+    std::string when;
+    if (finished == total_)
+      when = fmt::format(", {} here", duration_text(elapsed));
+    else if (ran > 0)
+      when = fmt::format(", about {} left", duration_text(elapsed / static_cast<double>(ran) *
+                                                          static_cast<double>(total_ - finished)));
+    const std::string line =
+        fmt::format("sweep: {}/{} runs done, {} failed{}", finished, total_, failed, when);
     if (tty_)
       fmt::print(stderr, "\r{:<70}", line);
     else

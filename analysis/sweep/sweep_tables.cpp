@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "analysis/records/result_fields.hpp"
 #include "analysis/sweep/statistics.hpp"
@@ -25,6 +27,76 @@ std::string csv_value(const nlohmann::json& v) {
   if (v.is_string()) return v.get<std::string>();
   if (v.is_null()) return "null";
   return v.dump();
+}
+
+std::vector<const SweepResult*> distinct_runs(const std::vector<const SweepResult*>& runs) {
+  std::vector<const SweepResult*> out;
+  std::set<std::string> seen;
+  for (const SweepResult* r : runs) {
+    if (r->error) continue;
+    const std::string f = r->fingerprint();
+    // A run without a fingerprint cannot be told from another: it counts.
+    if (f.empty() || seen.insert(f).second) out.push_back(r);
+  }
+  return out;
+}
+
+namespace {
+// Each setting's results, in the order of their indices.
+std::map<std::size_t, std::vector<const SweepResult*>> by_setting(
+    const SweepSpec& spec, const std::vector<SweepResult>& results) {
+  const std::vector<SweepRun> runs = spec.runs();
+  std::map<std::size_t, std::vector<const SweepResult*>> out;
+  for (const SweepResult& r : results)
+    out[runs.at(r.index).setting].push_back(&r);
+  for (auto& [setting, rs] : out)
+    std::sort(rs.begin(), rs.end(),
+              [](const SweepResult* a, const SweepResult* b) { return a->index < b->index; });
+  return out;
+}
+}  // namespace
+
+std::vector<std::string> identical_seed_warnings(const SweepSpec& spec,
+                                                 const std::vector<SweepResult>& results,
+                                                 std::size_t shown) {
+  const std::vector<SweepRun> runs = spec.runs();
+  std::vector<std::string> out;
+  std::size_t more = 0;
+  for (const auto& [setting, rs] : by_setting(spec, results)) {
+    std::size_t ok = 0;
+    for (const SweepResult* r : rs)
+      ok += r->error ? 0 : 1;
+    const std::size_t distinct = distinct_runs(rs).size();
+    if (distinct == ok) continue;
+    if (out.size() == shown) {
+      ++more;
+      continue;
+    }
+    std::string label;
+    for (std::size_t p = 0; p < spec.parameters.size(); ++p)
+      label += fmt::format("{}{}={}", p == 0 ? ", " : " ", spec.parameters[p],
+                           csv_value(spec.settings[setting][p]));
+    // The seeds that repeated an earlier seed's run.
+    std::map<std::string, std::uint64_t> first;
+    std::string repeats;
+    for (const SweepResult* r : rs) {
+      if (r->error || r->fingerprint().empty()) continue;
+      const std::uint64_t seed = runs.at(r->index).seed;
+      const auto [it, fresh] = first.emplace(r->fingerprint(), seed);
+      if (!fresh)
+        repeats +=
+            fmt::format("{}seed {} = seed {}", repeats.empty() ? "" : ", ", seed, it->second);
+    }
+    out.push_back(fmt::format(
+        "setting {}{}: {} distinct run{} of {} ({}: the same fingerprint); its statistics "
+        "count the distinct runs. Seeds change a run only through what is drawn: robots.count "
+        "with robots.start, robots.jitter, or a random model (docs/sweeps.md)",
+        setting, label, distinct, distinct == 1 ? "" : "s", ok, repeats));
+  }
+  if (more > 0)
+    out.push_back(fmt::format(
+        "{} more settings with identical runs (summary.csv's distinct_runs column)", more));
+  return out;
 }
 
 void write_runs_csv(const fs::path& file, const SweepSpec& spec,
@@ -56,40 +128,38 @@ void write_runs_csv(const fs::path& file, const SweepSpec& spec,
 
 void write_summary_csv(const fs::path& file, const SweepSpec& spec,
                        const std::vector<SweepResult>& results) {
-  const std::vector<SweepRun> runs = spec.runs();
-  std::map<std::size_t, std::vector<const SweepResult*>> by_setting;
-  for (const SweepResult& r : results)
-    by_setting[runs.at(r.index).setting].push_back(&r);
   AtomicFile f(file);
   std::string out = "setting";
   for (const std::string& p : spec.parameters)
     out += "," + csv_quote(p);
-  out += ",runs,failed,converged_rate";
+  out += ",runs,failed,distinct_runs,converged_rate";
   for (const std::string& m : sweep_metrics())
     out += fmt::format(
         ",{0}_mean,{0}_std,{0}_ci95,{0}_median,{0}_q1,{0}_q3,{0}_modes,{0}_low_fraction,"
         "{0}_low_median,{0}_high_median",
         m);
   out += "\n";
-  for (const auto& [setting, rs] : by_setting) {
+  for (const auto& [setting, all] : by_setting(spec, results)) {
     out += fmt::format("{}", setting);
     for (const auto& v : spec.settings[setting])
       out += "," + csv_quote(csv_value(v));
-    std::size_t ok = 0, converged = 0;
-    for (const SweepResult* r : rs) {
-      ok += r->error ? 0 : 1;
-      converged += (!r->error && r->converged()) ? 1 : 0;
-    }
+    std::size_t failed = 0, converged = 0;
+    for (const SweepResult* r : all)
+      failed += r->error ? 1 : 0;
+    const std::vector<const SweepResult*> rs = distinct_runs(all);
+    for (const SweepResult* r : rs)
+      converged += r->converged() ? 1 : 0;
     // What a sample cannot tell is left empty, never written as 0: a rate without runs, a
     // mean without values, a spread from fewer than two.
-    out += fmt::format(",{},{},{}", rs.size(), rs.size() - ok,
-                       ok > 0 ? fmt::format("{}", static_cast<double>(converged) / ok) : "");
+    out += fmt::format(
+        ",{},{},{},{}", all.size(), failed, rs.size(),
+        rs.empty() ? "" : fmt::format("{}", static_cast<double>(converged) / rs.size()));
     for (const std::string& m : sweep_metrics()) {
       std::vector<double> xs;
       for (const SweepResult* r : rs) {
         // A measure a run did not take (null: λ2 above metrics.algebraic_connectivity_robots)
         // is no sample.
-        const double x = r->error ? NAN : r->number(m);
+        const double x = r->number(m);
         if (!std::isnan(x)) xs.push_back(x);
       }
       const SampleSummary s = summarize_sample(xs);

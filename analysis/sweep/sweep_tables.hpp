@@ -15,6 +15,16 @@ namespace covsim {
 // fields marked summarized.
 std::vector<std::string> sweep_metrics();
 
+// The runs of one setting that its statistics count: failed runs left out, and of runs
+// with one fingerprint (seeds that drew nothing different: fixed starts and no random model)
+// the first alone, so that n identical runs are not taken for n that agreed.
+std::vector<const SweepResult*> distinct_runs(const std::vector<const SweepResult*>& runs);
+// One line for each setting whose seeds gave identical runs (at most `shown`, then how many
+// more), for stderr; none when every seed's run differs.
+std::vector<std::string> identical_seed_warnings(const SweepSpec& spec,
+                                                 const std::vector<SweepResult>& results,
+                                                 std::size_t shown = 5);
+
 // A swept value as a CSV cell: strings bare, null as "null", the rest as JSON.
 std::string csv_value(const nlohmann::json& v);
 

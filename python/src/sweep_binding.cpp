@@ -4,6 +4,7 @@
 
 #include "analysis/records/result_fields.hpp"
 #include "analysis/sweep/sweep_runner.hpp"
+#include "analysis/sweep/sweep_tables.hpp"
 #include "io/output_lock.hpp"
 #include "scenario_binding.hpp"
 
@@ -43,6 +44,9 @@ void bind_sweep(py::module_& m) {
           write_runs_csv(std::filesystem::path(out) / "runs.csv", spec, results);
           write_summary_csv(std::filesystem::path(out) / "summary.csv", spec, results);
         }
+        // Seeds that gave identical runs, as `covsim sweep` says on stderr.
+        for (const std::string& line : identical_seed_warnings(spec, results))
+          if (PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) != 0) throw py::error_already_set();
         // The rows of runs.csv, as dicts with typed values.
         const std::vector<SweepRun> runs = spec.runs();
         py::list rows;

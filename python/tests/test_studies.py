@@ -42,8 +42,10 @@ def test_mean_with_its_interval_percentages_and_per_robot_measures():
 
 
 def test_a_summary_table_by_column_name_from_a_sweep(scenarios, tmp_path):
+    # Jittered starts: u_shape's fixed ones would give one run for every seed.
     path = study.write_sweep(tmp_path / "ranges.json", scenarios / "u_shape.json",
-                             {"sensor.range": [0.5, None]}, seeds=[1, 2, 3])
+                             {"sensor.range": [0.5, None], "robots.jitter": [0.05]},
+                             seeds=[1, 2, 3])
     runs = study.sweep(path, tmp_path / "ranges", jobs=2)
     summary = study.read_summary(tmp_path / "ranges")
     assert list(summary["sensor.range"]) == ["0.5", "null"]

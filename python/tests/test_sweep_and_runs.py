@@ -96,3 +96,18 @@ def test_a_sweep_is_validated_before_it_runs_and_keeps_series(scenarios, tmp_pat
     series = tmp_path / "ok" / "runs" / "0.metrics.csv"
     assert series.exists() and series.read_text().startswith("t,cost_real")
     assert (rows["messages_delivered"] > 0).all() and (rows["info_age_mean"] > 0).all()
+
+
+def test_seeds_that_give_one_run_are_said_and_counted_once(scenarios, tmp_path):
+    # Without loss nothing in two_obstacles is drawn: seeds 3 and 4 run the same run.
+    spec = {"scenario": str(scenarios / "two_obstacles.json"),
+            "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.0, 0.4]},
+            "seeds": [3, 4]}
+    with pytest.warns(UserWarning, match=r"loss.p=0.0: 1 distinct run of 2 \(seed 4 = seed 3"):
+        rows = covsim.sweep(spec, out=tmp_path / "sw")
+    assert rows["fingerprint"][0] == rows["fingerprint"][1]
+    assert rows["fingerprint"][2] != rows["fingerprint"][3]
+    with open(tmp_path / "sw" / "summary.csv", newline="") as f:
+        summary = list(csv.DictReader(f))
+    assert [s["distinct_runs"] for s in summary] == ["1", "2"]
+    assert summary[0]["sim_time_std"] == ""

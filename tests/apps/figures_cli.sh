@@ -169,7 +169,18 @@ bad "trajectory_period" run "$source/scenarios/u_shape.json" --out w --set recor
 cat > sweep.json <<JSON
 {"scenario": "$source/scenarios/u_shape.json", "grid": {"sensor.range": [0.1, 0.5]}, "seeds": [1]}
 JSON
-"$covsim" sweep sweep.json --out s --jobs 2 > /dev/null 2>&1
+"$covsim" sweep sweep.json --out s --jobs 2 > /dev/null 2> s.err
+# Off a terminal, a line per run: an estimate once a run has ended, the time taken at the end.
+grep -q '^sweep: 1/2 runs done, 0 failed, about [0-9.]* s left$' s.err || fail "progress: $(cat s.err)"
+grep -q '^sweep: 2/2 runs done, 0 failed, [0-9.]* s here$' s.err || fail "progress: $(cat s.err)"
+# u_shape's positions are fixed and nothing in it is drawn: every seed runs the same run.
+cat > same.json <<JSON
+{"scenario": "$source/scenarios/u_shape.json", "grid": {"sensor.range": [0.5]}, "seeds": [1, 2]}
+JSON
+"$covsim" sweep same.json --out same --jobs 2 > /dev/null 2> same.err
+grep -q 'warning: setting 0, sensor.range=0.5: 1 distinct run of 2 (seed 2 = seed 1' same.err ||
+  fail "identical seeds: $(cat same.err)"
+grep -q '^0,0.5,2,0,1,1,' same/summary.csv || fail "distinct_runs: $(cat same/summary.csv)"
 svgs=$(ls s/*_vs_sensor.range.svg | wc -l)
 [ "$svgs" -ge 5 ] || fail "the sweep drew $svgs plots"
 for f in s/*.svg; do check_svg "$f"; done

@@ -225,9 +225,10 @@ TEST_CASE("a failing run is recorded and the sweep goes on", "[sweep]") {
   std::getline(in, header);
   std::getline(in, row0);
   std::getline(in, row1);
-  // One run, one failed: no convergence rate and no statistics, rather than zeros.
-  CHECK_THAT(row1, Catch::StartsWith("1,-1,1,1,,"));
-  CHECK(row1.find_first_not_of(",", std::string("1,-1,1,1,").size()) == std::string::npos);
+  // One run, one failed, none distinct: no convergence rate and no statistics, rather than
+  // zeros.
+  CHECK_THAT(row1, Catch::StartsWith("1,-1,1,1,0,,"));
+  CHECK(row1.find_first_not_of(",", std::string("1,-1,1,1,0,").size()) == std::string::npos);
 }
 
 TEST_CASE("shards split the runs without overlap", "[sweep]") {
@@ -503,4 +504,66 @@ TEST_CASE("a measure no run took is left empty in summary.csv, never nan", "[swe
   REQUIRE(b.size() > k);
   CHECK(a[k].empty());
   CHECK(std::stod(b[k]) > 0);
+}
+
+TEST_CASE("seeds that give one run are counted once, and said", "[sweep]") {
+  // Two settings of three seeds: in the first, seeds 1 and 3 ran the same run (one
+  // fingerprint), in the second every seed differs.
+  const fs::path dir = temp_dir("identical_seeds");
+  const std::string u = std::string(COVSIM_SOURCE_DIR) + "/scenarios/u_shape.json";
+  const SweepSpec spec = load_sweep(write_sweep(dir, R"({"scenario": ")" + u + R"(",
+      "grid": {"robots.max_speed": [0.1, 0.2]}, "seeds": [1, 2, 3]})"));
+  const auto result = [](std::size_t index, const char* fingerprint, double time) {
+    SweepResult r;
+    r.index = index;
+    r.values["converged"] = true;
+    r.values["sim_time"] = time;
+    r.values["fingerprint"] = fingerprint;
+    return r;
+  };
+  const std::vector<SweepResult> results{
+      result(0, "00000000000000aa", 10.0), result(1, "00000000000000bb", 20.0),
+      result(2, "00000000000000aa", 10.0), result(3, "00000000000000c1", 1.0),
+      result(4, "00000000000000c2", 2.0),  result(5, "00000000000000c3", 3.0)};
+  write_summary_csv(dir / "summary.csv", spec, results);
+  std::ifstream in(dir / "summary.csv");
+  std::string header, first, second;
+  std::getline(in, header);
+  std::getline(in, first);
+  std::getline(in, second);
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');)
+      out.push_back(cell);
+    return out;
+  };
+  const std::vector<std::string> names = cells(header), a = cells(first), b = cells(second);
+  const auto column = [&](const std::vector<std::string>& row, const std::string& name) {
+    const auto at = std::find(names.begin(), names.end(), name);
+    REQUIRE(at != names.end());
+    return row.at(static_cast<std::size_t>(at - names.begin()));
+  };
+  CHECK(column(a, "runs") == "3");
+  CHECK(column(a, "distinct_runs") == "2");
+  CHECK(column(b, "distinct_runs") == "3");
+  // The mean of 10 and 20, not of 10, 20 and 10; a spread from two runs.
+  CHECK(std::stod(column(a, "sim_time_mean")) == 15.0);
+  CHECK(std::stod(column(a, "sim_time_std")) == Approx(std::sqrt(50.0)));
+  CHECK(std::stod(column(b, "sim_time_mean")) == 2.0);
+
+  const std::vector<std::string> warnings = identical_seed_warnings(spec, results);
+  REQUIRE(warnings.size() == 1);
+  CHECK_THAT(warnings[0], Catch::StartsWith("setting 0, robots.max_speed=0.1: 2 distinct runs of 3 "
+                                            "(seed 3 = seed 1: the same fingerprint)"));
+  CHECK_THAT(warnings[0], Catch::Contains("robots.jitter"));
+  // Past the lines shown, how many more.
+  std::vector<SweepResult> all_same;
+  for (std::size_t i = 0; i < 6; ++i)
+    all_same.push_back(result(i, i < 3 ? "00000000000000aa" : "00000000000000bb", 1.0));
+  const std::vector<std::string> capped = identical_seed_warnings(spec, all_same, 1);
+  REQUIRE(capped.size() == 2);
+  CHECK_THAT(capped[1], Catch::StartsWith("1 more settings with identical runs"));
+  // Every seed's run its own: nothing to say.
+  CHECK(identical_seed_warnings(spec, {results[3], results[4], results[5]}).empty());
 }
