@@ -6,6 +6,7 @@
 #include <cctype>
 #include <stdexcept>
 
+#include "scenarios/component_sections.hpp"
 #include "scenarios/input_file.hpp"
 #include "scenarios/json_reader.hpp"
 #include "scenarios/scenario_error.hpp"
@@ -36,6 +37,46 @@ void set_dotted(nlohmann::json& j, const std::string& dotted, const nlohmann::js
     at = &(*at)[key];
     start = dot + 1;
   }
+}
+
+void override_scenario(nlohmann::json& j, const std::string& path, const nlohmann::json& value) {
+  for_each_component_section([&](const auto& row) {
+    if (path != row.path + "." + row.type_key || !value.is_string()) return;
+    // The section, if the scenario has it.
+    nlohmann::json* section = &j;
+    for (std::size_t start = 0; section != nullptr && start <= row.path.size();) {
+      const std::size_t dot = std::min(row.path.find('.', start), row.path.size());
+      const auto it = section->is_object() ? section->find(row.path.substr(start, dot - start))
+                                           : section->end();
+      section = section->is_object() && it != section->end() ? &*it : nullptr;
+      start = dot + 1;
+    }
+    if (section == nullptr || !section->is_object()) return;
+    const auto t = section->find(row.type_key);
+    const std::optional<std::string> old =
+        t != section->end()
+            ? (t->is_string() ? std::optional(t->template get<std::string>()) : std::nullopt)
+            : row.default_type;
+    const auto* from = old ? row.registry().find(*old) : nullptr;
+    const auto* to = row.registry().find(value.template get<std::string>());
+    if (from == nullptr || to == nullptr || from == to) return;  // the loader judges the rest
+    nlohmann::json moved = nlohmann::json::object();
+    for (auto it = section->begin(); it != section->end();) {
+      if (find_param(from->params, it.key()) != nullptr &&
+          find_param(to->params, it.key()) == nullptr) {
+        moved[it.key()] = *it;
+        it = section->erase(it);
+      } else {
+        ++it;
+      }
+    }
+    if (moved.empty()) return;
+    nlohmann::json& block = (*section)[*old];
+    if (!block.is_object()) block = nlohmann::json::object();
+    for (auto& [key, v] : moved.items())
+      if (!block.contains(key)) block[key] = v;  // what the block set already stands
+  });
+  set_dotted(j, path, value);
 }
 
 ScenarioOverride parse_override(std::string_view text, std::string_view option) {
@@ -74,7 +115,7 @@ Scenario load_scenario(const std::filesystem::path& file,
   InputFile in = read_input(file);
   nlohmann::json& j = in.json;
   for (const ScenarioOverride& o : overrides)
-    set_dotted(j, o.path, o.value);
+    override_scenario(j, o.path, o.value);
   try {
     return parse_scenario(j, in.source, file.parent_path());
   } catch (const ScenarioError& e) {

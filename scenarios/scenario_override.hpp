@@ -23,6 +23,13 @@ struct ScenarioOverride {
 std::string dotted_path_error(std::string_view path);
 // Sets a dotted path in a JSON object, creating objects on the way.
 void set_dotted(nlohmann::json& j, const std::string& path, const nlohmann::json& value);
+// Sets a dotted path of a scenario (set_dotted), as overrides do. Setting a component's type
+// key to another type (robots.localization.type=exact where it was tracking) moves the old
+// type's parameters that the new one lacks into the section's block for the old type
+// ("tracking": {...}), where they wait for runs of that type: the section stays valid, and a
+// sweep over the types keeps each one's parameters.
+void override_scenario(nlohmann::json& scenario, const std::string& path,
+                       const nlohmann::json& value);
 // "PATH=VALUE": VALUE is JSON (0.3, null, true, "text", [1, 2], {"p": 0.1}), or a bare word
 // of letters, digits and _ . - taken as a string (grid_astar). Throws std::invalid_argument
 // saying what is wrong.

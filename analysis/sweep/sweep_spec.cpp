@@ -262,7 +262,7 @@ std::vector<SweepRun> SweepSpec::runs() const {
 nlohmann::json SweepSpec::scenario_for(const SweepRun& run) const {
   nlohmann::json j = scenario;
   for (std::size_t p = 0; p < parameters.size(); ++p)
-    set_dotted(j, parameters[p], run.values[p]);
+    override_scenario(j, parameters[p], run.values[p]);
   j["seed"] = run.seed;
   return j;
 }

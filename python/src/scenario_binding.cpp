@@ -60,7 +60,7 @@ void PyScenario::set(const std::string& path, const nlohmann::json& value) {
     throw py::value_error(call + ": " + e);
   nlohmann::json j = json;
   try {
-    set_dotted(j, path, value);
+    override_scenario(j, path, value);
     parsed = parse_scenario(j, parsed.source, base_dir);  // validated, or nothing changes
   } catch (const ScenarioError& e) {
     if (e.path().empty()) throw ScenarioError(call + ": " + e.what());
