@@ -135,11 +135,14 @@ nlohmann::json portable_scenario(const Scenario& scenario, const fs::path& dir) 
   // Robots drawn per seed are written as drawn: the folder replays without the generator.
   if (j.contains("robots") && j["robots"].is_object() &&
       (j["robots"].contains("count") || j["robots"].contains("jitter"))) {
-    nlohmann::json robots{{"positions", nlohmann::json::array()}};
+    // Only how they were drawn is replaced; their speed, body, localization and the rest
+    // stay.
+    nlohmann::json& robots = j["robots"];
+    for (const char* drawn : {"count", "start", "separation", "jitter"})
+      robots.erase(drawn);
+    robots["positions"] = nlohmann::json::array();
     for (Vec2 p : scenario.robot_positions)
       robots["positions"].push_back({p.x, p.y});
-    if (j["robots"].contains("max_speed")) robots["max_speed"] = j["robots"]["max_speed"];
-    j["robots"] = robots;
   }
   if (j.contains("density") && j["density"].contains("file") && j["density"]["file"].is_string()) {
     const fs::path f = j["density"]["file"].get<std::string>();

@@ -63,8 +63,8 @@ foreach(d no1 no2 no3 no4 no5)
 endforeach()
 
 # Robots drawn per seed: seeds deploy differently, and the run folder replays without the
-# generator.
-string(JSON drawn SET "${base}" robots "{\"count\": 6, \"start\": {\"cluster\": {\"center\": [0.15, 0.85], \"radius\": 0.12}}}")
+# generator (their body and speed kept beside the positions drawn).
+string(JSON drawn SET "${base}" robots "{\"count\": 6, \"start\": {\"cluster\": {\"center\": [0.15, 0.85], \"radius\": 0.12}}, \"radius\": 0.004, \"max_speed\": 0.12}")
 file(WRITE ${WORK}/drawn.json "${drawn}")
 run_ok(d1 run ${WORK}/drawn.json --seed 1 --out ${WORK}/d1)
 run_ok(d2 run ${WORK}/drawn.json --seed 2 --out ${WORK}/d2)
