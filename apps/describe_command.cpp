@@ -6,6 +6,7 @@
 #include "apps/commands.hpp"
 #include "apps/plugin_loader.hpp"
 #include "apps/scenario_options.hpp"
+#include "scenarios/readable_json.hpp"
 #include "scenarios/scenario_description.hpp"
 
 namespace covsim::app {
@@ -22,7 +23,7 @@ void add_describe_command(CLI::App& app) {
   add_plugin_option(cmd, opts->plugins);
   cmd->callback([opts] {
     load_plugins(opts->plugins);
-    std::cout << describe_scenario(opts->scenario.load()).dump(2) << '\n';
+    std::cout << readable_json(describe_scenario(opts->scenario.load())) << '\n';
   });
 }
 

@@ -3,6 +3,7 @@
 // --out the same folder it redraws the plots (--format, --group) from the runs kept there.
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -48,8 +49,9 @@ void add_merge_command(CLI::App& app) {
       throw InputError(e.what());
     }
     write_sweep_plots(opts->out, spec, results, opts->group, *parse_figure_format(opts->format));
+    // A warning lost to a full or closed stderr is not the sweep's failure.
     for (const std::string& line : identical_seed_warnings(spec, results))
-      fmt::print(stderr, "covsim: warning: {}\n", line);
+      std::fprintf(stderr, "covsim: warning: %s\n", line.c_str());
     fmt::print("merged {} runs from {} folders into {}/runs.csv and {}/summary.csv\n",
                results.size(), dirs.size(), opts->out, opts->out);
   });

@@ -25,6 +25,7 @@
 #include "core/trace.hpp"
 #include "io/atomic_file.hpp"
 #include "io/staged_folder.hpp"
+#include "scenarios/readable_json.hpp"
 #include "scenarios/scenario_error.hpp"
 #include "sim/coverage_run.hpp"
 #include "sim/run_progress.hpp"
@@ -106,8 +107,9 @@ void add_run_command(CLI::App& app) {
     AtomicFile final_file(work / "final.json"), scene(work / ("scene." + ext)),
         cost(work / ("cost." + ext));
     AtomicFile scenario_copy(work / "scenario.json");
-    scenario_copy.stream()
-        << portable_scenario(scenario, fs::path(opts->scenario.file).parent_path()).dump(2) << "\n";
+    scenario_copy.stream() << readable_json(portable_scenario(
+                                  scenario, fs::path(opts->scenario.file).parent_path()))
+                           << "\n";
     final_file.stream() << final_json(outcome);
     SceneOptions scene_options;
     scene_options.layers = opts->figures.drawn();

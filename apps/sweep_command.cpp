@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <thread>
@@ -68,8 +69,9 @@ void add_sweep_command(CLI::App& app) {
     write_summary_csv(dir / "summary.csv", spec, results);
     const auto plots =
         write_sweep_plots(dir, spec, results, opts->group, *parse_figure_format(opts->format));
+    // A warning lost to a full or closed stderr is not the sweep's failure.
     for (const std::string& line : identical_seed_warnings(spec, results))
-      fmt::print(stderr, "covsim: warning: {}\n", line);
+      std::fprintf(stderr, "covsim: warning: %s\n", line.c_str());
     std::size_t failed = 0, converged = 0;
     for (const SweepResult& r : results) {
       failed += r.error ? 1 : 0;
