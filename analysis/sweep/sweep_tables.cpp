@@ -7,9 +7,11 @@
 #include <map>
 #include <set>
 
+#include "analysis/records/csv_metadata.hpp"
 #include "analysis/records/result_fields.hpp"
 #include "analysis/sweep/statistics.hpp"
 #include "io/atomic_file.hpp"
+#include "scenarios/scenario_description.hpp"
 
 namespace covsim {
 
@@ -99,17 +101,62 @@ std::vector<std::string> identical_seed_warnings(const SweepSpec& spec,
   return out;
 }
 
+namespace {
+// The swept parameters, each with its unit in the scenario.
+void add_parameters(const SweepSpec& spec, std::vector<CsvColumn>& out) {
+  for (const std::string& p : spec.parameters)
+    out.push_back(CsvColumn{p, FieldKind::json, scenario_key_unit(p),
+                            "swept: the value of this dotted path of the scenario"});
+}
+}  // namespace
+
+std::vector<CsvColumn> runs_columns(const SweepSpec& spec) {
+  std::vector<CsvColumn> out{{"run", FieldKind::integer, "", "the run's index in the sweep"},
+                             {"setting", FieldKind::integer, "", "the setting's index"}};
+  add_parameters(spec, out);
+  out.push_back({"seed", FieldKind::integer, "", "the run's seed"});
+  for (const auto& f : run_fields())
+    out.push_back({f.name, f.kind, f.unit, f.description});
+  out.push_back({"error", FieldKind::text, "", "why the run failed; empty if it did not"});
+  return out;
+}
+
+std::vector<CsvColumn> summary_columns(const SweepSpec& spec) {
+  std::vector<CsvColumn> out{{"setting", FieldKind::integer, "", "the setting's index"}};
+  add_parameters(spec, out);
+  out.push_back({"runs", FieldKind::integer, "", "runs of the setting"});
+  out.push_back({"failed", FieldKind::integer, "", "runs that failed"});
+  out.push_back({"distinct_runs", FieldKind::integer, "",
+                 "runs that did not fail, runs with one fingerprint counted once: the statistics' "
+                 "sample"});
+  out.push_back({"converged_rate", FieldKind::number, "",
+                 "the share of the distinct runs that "
+                 "converged"});
+  for (const auto& f : run_fields()) {
+    if (!f.summarized) continue;
+    const auto add = [&](const char* suffix, const std::string& unit, const std::string& what) {
+      out.push_back({f.name + suffix, FieldKind::number, unit, what + " of " + f.name});
+    };
+    add("_mean", f.unit, "the mean");
+    add("_std", f.unit, "the sample standard deviation");
+    add("_ci95", f.unit, "the half-width of the 95% confidence interval of the mean");
+    add("_median", f.unit, "the median");
+    add("_q1", f.unit, "the first quartile");
+    add("_q3", f.unit, "the third quartile");
+    add("_modes", "", "the number of modes (1 or 2)");
+    add("_low_fraction", "", "with two modes, the share of runs in the lower");
+    add("_low_median", f.unit, "with two modes, the median of the lower");
+    add("_high_median", f.unit, "with two modes, the median of the higher");
+  }
+  return out;
+}
+
 void write_runs_csv(const fs::path& file, const SweepSpec& spec,
                     const std::vector<SweepResult>& results) {
   const std::vector<SweepRun> runs = spec.runs();
+  const std::vector<CsvColumn> columns = runs_columns(spec);
   AtomicFile f(file);
-  std::string out = "run,setting";
-  for (const std::string& p : spec.parameters)
-    out += "," + csv_quote(p);
-  out += ",seed";
-  for (const auto& field : run_fields())
-    out += "," + field.name;
-  out += ",error\n";
+  std::string out = csv_header(columns) + "\n";
   for (const SweepResult& r : results) {
     const SweepRun& run = runs.at(r.index);
     out += fmt::format("{},{}", r.index, run.setting);
@@ -124,21 +171,14 @@ void write_runs_csv(const fs::path& file, const SweepSpec& spec,
   }
   f.stream() << out;
   f.commit();
+  write_csv_metadata(file, "covsim sweep: one row per run", columns);
 }
 
 void write_summary_csv(const fs::path& file, const SweepSpec& spec,
                        const std::vector<SweepResult>& results) {
+  const std::vector<CsvColumn> columns = summary_columns(spec);
   AtomicFile f(file);
-  std::string out = "setting";
-  for (const std::string& p : spec.parameters)
-    out += "," + csv_quote(p);
-  out += ",runs,failed,distinct_runs,converged_rate";
-  for (const std::string& m : sweep_metrics())
-    out += fmt::format(
-        ",{0}_mean,{0}_std,{0}_ci95,{0}_median,{0}_q1,{0}_q3,{0}_modes,{0}_low_fraction,"
-        "{0}_low_median,{0}_high_median",
-        m);
-  out += "\n";
+  std::string out = csv_header(columns) + "\n";
   for (const auto& [setting, all] : by_setting(spec, results)) {
     out += fmt::format("{}", setting);
     for (const auto& v : spec.settings[setting])
@@ -178,6 +218,7 @@ void write_summary_csv(const fs::path& file, const SweepSpec& spec,
   }
   f.stream() << out;
   f.commit();
+  write_csv_metadata(file, "covsim sweep: one row per setting", columns);
 }
 
 }  // namespace covsim

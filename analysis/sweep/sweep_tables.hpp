@@ -1,11 +1,12 @@
 #pragma once
 // A sweep's tables: DIR/runs.csv (one row per run: its parameters, seed, measures and error)
 // and DIR/summary.csv (one row per setting: mean, spread, quartiles and modes of every
-// summarised measure).
+// summarised measure), each with its columns' units beside it (FILE-metadata.json, CSVW).
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "analysis/records/csv_metadata.hpp"
 #include "analysis/sweep/sweep_result.hpp"
 #include "analysis/sweep/sweep_spec.hpp"
 
@@ -27,6 +28,11 @@ std::vector<std::string> identical_seed_warnings(const SweepSpec& spec,
 
 // A swept value as a CSV cell: strings bare, null as "null", the rest as JSON.
 std::string csv_value(const nlohmann::json& v);
+
+// The columns of runs.csv and of summary.csv, with their units, in order: the header and
+// the CSVW metadata written beside each (runs.csv-metadata.json) come from these.
+std::vector<CsvColumn> runs_columns(const SweepSpec& spec);
+std::vector<CsvColumn> summary_columns(const SweepSpec& spec);
 
 void write_runs_csv(const std::filesystem::path& file, const SweepSpec& spec,
                     const std::vector<SweepResult>& results);

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "analysis/records/result_fields.hpp"
@@ -93,6 +94,38 @@ TEST_CASE("a sweep's files have a column for every measure it records", "[fields
     INFO(c);
     CHECK(summary.find("," + c + "_mean,") != std::string::npos);
   }
+
+  // Beside each table, its columns in CSVW metadata: the header's names in order, with the
+  // measures' units, the swept parameters' and the statistics' (a spread in the measure's).
+  for (const char* table : {"runs.csv", "summary.csv"}) {
+    INFO(table);
+    const auto meta =
+        nlohmann::json::parse(read_text(dir / "out" / (std::string(table) + "-metadata.json")));
+    CHECK(meta["@context"] == "http://www.w3.org/ns/csvw");
+    CHECK(meta["url"] == table);
+    std::vector<std::string> names;
+    std::map<std::string, std::string> unit;
+    for (const auto& c : meta["tableSchema"]["columns"]) {
+      names.push_back(c["name"].get<std::string>());
+      if (c.contains("schema:unitText")) unit[names.back()] = c["schema:unitText"];
+    }
+    CHECK(names == split(split(read_text(dir / "out" / table), "\n").at(0), ","));
+    CHECK(unit["sim_time"] == (std::string(table) == "runs.csv" ? "s" : ""));
+    CHECK(unit.count("network.loss.p") == 0);  // a probability has no unit
+  }
+  const auto summary_meta =
+      nlohmann::json::parse(read_text(dir / "out" / "summary.csv-metadata.json"));
+  std::map<std::string, std::string> unit;
+  for (const auto& c : summary_meta["tableSchema"]["columns"])
+    unit[c["name"]] = c.value("schema:unitText", "");
+  CHECK(unit["sim_time_mean"] == "s");
+  CHECK(unit["sim_time_std"] == "s");
+  CHECK(unit["sim_time_modes"].empty());
+  CHECK(unit["path_length_q3"] == "m");
+  // A swept parameter with a unit keeps it.
+  SweepSpec ranged = spec;
+  ranged.parameters = {"sensor.range"};
+  CHECK(runs_columns(ranged).at(2).unit == "m");
   fs::remove_all(dir);
 }
 
