@@ -25,12 +25,16 @@ void add_merge_command(CLI::App& app) {
     std::string out;
     std::string group;
     std::string format = "svg";
+    std::vector<std::string> measures;
   };
   auto opts = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("merge", "Combine the output folders of a sweep's shards");
   cmd->add_option("DIR", opts->dirs, "Output folders of covsim sweep --shard")->required();
   cmd->add_option("--out", opts->out, "Folder for the combined results")->required();
   cmd->add_option("--group", opts->group, "Plot one line per value of this swept parameter");
+  cmd->add_option("--measures", opts->measures,
+                  "Draw charts of these measures only (comma-separated summary.csv measures)")
+      ->delimiter(',');
   cmd->add_option("--format", opts->format, "Plots as svg, pdf or png")
       ->check(CLI::IsMember({"svg", "pdf", "png"}))
       ->capture_default_str();
@@ -42,13 +46,15 @@ void add_merge_command(CLI::App& app) {
     try {
       // --group is checked before anything is written.
       if (!dirs.empty()) check_chart_group(sweep_of_folder(dirs.front()), opts->group);
+      check_chart_measures(opts->measures);
       results = merge_sweeps(dirs, opts->out, spec);
     } catch (const ScenarioError&) {
       throw;                             // names the file and what was expected
     } catch (const std::exception& e) {  // runtime_error, or invalid_argument for --group
       throw InputError(e.what());
     }
-    write_sweep_plots(opts->out, spec, results, opts->group, *parse_figure_format(opts->format));
+    write_sweep_plots(opts->out, spec, results, opts->group, *parse_figure_format(opts->format),
+                      opts->measures);
     // A warning lost to a full or closed stderr is not the sweep's failure.
     for (const std::string& line : identical_seed_warnings(spec, results))
       std::fprintf(stderr, "covsim: warning: %s\n", line.c_str());

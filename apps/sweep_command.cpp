@@ -27,6 +27,7 @@ void add_sweep_command(CLI::App& app) {
     std::string shard = "0/1";
     std::string group;
     std::string format = "svg";
+    std::vector<std::string> measures;
     bool keep_series = false;
     std::vector<std::string> plugins;
   };
@@ -38,6 +39,10 @@ void add_sweep_command(CLI::App& app) {
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   cmd->add_option("--group", opts->group, "Plot one line per value of this swept parameter");
+  cmd->add_option("--measures", opts->measures,
+                  "Draw charts of these measures only (comma-separated summary.csv measures; "
+                  "default: every one that differs over the runs)")
+      ->delimiter(',');
   cmd->add_option("--format", opts->format, "Plots as svg, pdf or png")
       ->check(CLI::IsMember({"svg", "pdf", "png"}))
       ->capture_default_str();
@@ -60,6 +65,11 @@ void add_sweep_command(CLI::App& app) {
     } catch (const std::invalid_argument& e) {
       throw InputError(fmt::format("{} of {}", e.what(), opts->sweep));
     }
+    try {
+      check_chart_measures(opts->measures);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(e.what());
+    }
     const std::filesystem::path dir = opts->out;
     // One writer at a time (a second process resuming the same folder is refused).
     const auto lock = guard_output(dir);
@@ -67,8 +77,8 @@ void add_sweep_command(CLI::App& app) {
         run_sweep(spec, dir, SweepOptions{opts->jobs, true, k, n, opts->keep_series});
     write_runs_csv(dir / "runs.csv", spec, results);
     write_summary_csv(dir / "summary.csv", spec, results);
-    const auto plots =
-        write_sweep_plots(dir, spec, results, opts->group, *parse_figure_format(opts->format));
+    const auto plots = write_sweep_plots(dir, spec, results, opts->group,
+                                         *parse_figure_format(opts->format), opts->measures);
     // A warning lost to a full or closed stderr is not the sweep's failure.
     for (const std::string& line : identical_seed_warnings(spec, results))
       std::fprintf(stderr, "covsim: warning: %s\n", line.c_str());

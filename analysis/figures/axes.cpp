@@ -61,14 +61,22 @@ Axes chart_axes(Box data, Vec2 lo, Vec2 hi, bool log_y, bool log_x) {
     decade_range(data.lo.x, data.hi.x);
   else
     tick_range(data.lo.x, data.hi.x, 8);
-  return {data, lo, hi, log_y, log_x};
+  return {data, lo, hi, log_y, log_x, {}};
+}
+
+Axes category_axes(std::vector<std::string> categories, Box data, Vec2 lo, Vec2 hi) {
+  Axes a = chart_axes(data, lo, hi);
+  a.data.lo.x = -0.5;
+  a.data.hi.x = static_cast<double>(categories.size()) - 0.5;
+  a.x_categories = std::move(categories);
+  return a;
 }
 
 Axes map_axes(Box data, Vec2 lo, Vec2 hi) {
   const double s = std::min((hi.x - lo.x) / data.size().x, (hi.y - lo.y) / data.size().y);
   const Vec2 half = 0.5 * Vec2{(hi.x - lo.x) / s, (hi.y - lo.y) / s};
   const Vec2 mid = 0.5 * (data.lo + data.hi);
-  return {Box{mid - half, mid + half}, lo, hi, false, false};
+  return {Box{mid - half, mid + half}, lo, hi, false, false, {}};
 }
 
 namespace {
@@ -119,7 +127,11 @@ void draw_axes(Canvas& c, const Axes& a, std::string_view x_label, std::string_v
   const double tick = kTick * font, u = font / 10;
   const Stroke grid_line{light, 0.6 * u}, tick_line{ink, 0.8 * u};
   const double x_values = a.hi.y + tick + (kTickGap + kAscent) * font;
-  for (const auto& [x, label] : axis_ticks(a.data.lo.x, a.data.hi.x, a.log_x, 8)) {
+  std::vector<std::pair<double, std::string>> x_ticks;
+  for (std::size_t k = 0; k < a.x_categories.size(); ++k)
+    x_ticks.emplace_back(static_cast<double>(k), a.x_categories[k]);
+  if (a.x_categories.empty()) x_ticks = axis_ticks(a.data.lo.x, a.data.hi.x, a.log_x, 8);
+  for (const auto& [x, label] : x_ticks) {
     const double px = a.to_px({x, a.data.lo.y}).x;
     if (grid) c.line({px, a.lo.y}, {px, a.hi.y}, grid_line);
     c.line({px, a.hi.y}, {px, a.hi.y + tick}, tick_line);

@@ -1,7 +1,9 @@
 #pragma once
 // A data rectangle mapped onto a rectangle of a picture, with its frame, ticks and labels:
 // the scene's axes in metres and every chart's.
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "analysis/figures/canvas.hpp"
 
@@ -15,6 +17,8 @@ struct Axes {
   Vec2 lo, hi;         // the picture rectangle: lo top-left, hi bottom-right
   bool log_y = false;  // y on a base-10 log scale (data.lo.y > 0)
   bool log_x = false;  // x on a base-10 log scale (data.lo.x > 0)
+  // Categories along x instead of numbers: category k at x = k, its name as the tick.
+  std::vector<std::string> x_categories;
   Vec2 to_px(Vec2 d) const;
   double px_per_unit() const { return (hi.x - lo.x) / (data.hi.x - data.lo.x); }
 };
@@ -22,6 +26,9 @@ struct Axes {
 // Axes over `data` rounded out to ticks (to decades on a log axis), filling the picture
 // rectangle.
 Axes chart_axes(Box data, Vec2 lo, Vec2 hi, bool log_y = false, bool log_x = false);
+// Axes with `categories` along x (from -0.5 to their count - 0.5) and `data`'s y range
+// rounded out to ticks.
+Axes category_axes(std::vector<std::string> categories, Box data, Vec2 lo, Vec2 hi);
 // Axes for a map: x and y in the same scale, `data` centred in the picture rectangle.
 Axes map_axes(Box data, Vec2 lo, Vec2 hi);
 

@@ -54,7 +54,9 @@ std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
   const auto title = wrap_text(chart.title, title_font, w - 2 * pad);
   const double top = pad + 1.3 * title_font * static_cast<double>(title.size()) + pad;
   const double h = file.size.height > 0 ? file.size.height : 0.62 * w;
-  Axes a = chart_axes(data, {0, 0}, {1, 1}, chart.log_y, chart.log_x);
+  const bool categorical = !chart.x_categories.empty();
+  Axes a = categorical ? category_axes(chart.x_categories, data, {0, 0}, {1, 1})
+                       : chart_axes(data, {0, 0}, {1, 1}, chart.log_y, chart.log_x);
   a.lo = {axes_left_room(a, f), top};
   a.hi = {w - 1.5 * pad, h - legend_h - axes_bottom_room(f)};
 
@@ -65,7 +67,22 @@ std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
   for (std::size_t k = 0; k < title.size(); ++k)
     c.text({pad, pad + title_font * (1.3 * k + 1.0)}, title[k], title_font, ink);
   c.push_clip({{a.lo, {a.hi.x, a.lo.y}, a.hi, {a.lo.x, a.hi.y}}});
-  for (std::size_t k = 0; k < chart.series.size(); ++k) {
+  for (std::size_t k = 0; k < chart.series.size() && categorical; ++k) {
+    // Series side by side within a category's width.
+    const ChartSeries& s = chart.series[k];
+    const std::uint32_t colour = kPalette[k % 8];
+    const double n = static_cast<double>(chart.series.size());
+    const double dx = 0.7 / n * (static_cast<double>(k) - (n - 1) / 2);
+    for (const auto& [x, y] : s.samples)
+      if (visible(x, y)) c.circle(a.to_px({x + dx, y}), 1.6 * u, Colour::hex(colour, 0.35));
+    for (const ChartPoint& p : s.points) {
+      if (!visible(p.x, p.y)) continue;
+      if (s.band && visible(p.x, p.lo) && visible(p.x, p.hi))
+        c.line(a.to_px({p.x + dx, p.lo}), a.to_px({p.x + dx, p.hi}), line(k));
+      c.circle(a.to_px({p.x + dx, p.y}), 2.6 * u, Colour::hex(colour));
+    }
+  }
+  for (std::size_t k = 0; k < chart.series.size() && !categorical; ++k) {
     const ChartSeries& s = chart.series[k];
     const std::uint32_t colour = kPalette[k % 8];
     if (s.band && !s.points.empty()) {

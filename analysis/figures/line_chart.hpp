@@ -1,6 +1,7 @@
 #pragma once
 // A line chart: series of (x, y) with an optional band [lo, hi] around each line and the
-// individual runs as faint dots, drawn through the Canvas in any figure format.
+// individual runs as faint dots, drawn through the Canvas in any figure format; or, over
+// categories, a strip chart of the same series.
 #include <optional>
 #include <string>
 #include <utility>
@@ -28,6 +29,10 @@ struct LineChart {
   std::vector<ChartSeries> series;
   bool log_y = false;
   bool log_x = false;  // points with x <= 0 are not drawn on a log x axis
+  // Categories along x (a planner, a loop schedule): category k at x = k. Each series is then
+  // drawn beside the others at each category, its runs as dots and its mean as a point with
+  // its band as a whisker, without lines between categories.
+  std::vector<std::string> x_categories;
   // A vertical line marking an x (the convergence time, say), with its label.
   std::optional<std::pair<double, std::string>> marker;
 };

@@ -181,6 +181,8 @@ JSON
 grep -q 'warning: setting 0, sensor.range=0.5: 1 distinct run of 2 (seed 2 = seed 1' same.err ||
   fail "identical seeds: $(cat same.err)"
 grep -q '^0,0.5,2,0,1,1,' same/summary.csv || fail "distinct_runs: $(cat same/summary.csv)"
+bad "\"cost_reel\" is not a measure.*did you mean 'cost_real'" sweep sweep.json --out nope --measures cost_reel
+[ ! -e nope ] || fail "a sweep with a bad --measures left its folder"
 svgs=$(ls s/*_vs_sensor.range.svg | wc -l)
 [ "$svgs" -ge 5 ] || fail "the sweep drew $svgs plots"
 for f in s/*.svg; do check_svg "$f"; done
