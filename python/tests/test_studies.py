@@ -154,3 +154,45 @@ def test_the_radio_study_refuses_an_unknown_number_of_robots(monkeypatch, capsys
             study.run(radio.main)
         assert exit.value.code == 1
         assert "radio.py: " in capsys.readouterr().err
+
+
+def test_compare_planners_on_ones_own_scenario(scenarios, tmp_path):
+    # studies/compare_planners.py SCENARIO... --out DIR: the tables and charts for any
+    # scenario, the docs left alone.
+    import json
+    import os
+    import pathlib
+    import subprocess
+
+    from conftest import COVSIM
+
+    room = json.loads((scenarios / "u_shape.json").read_text())
+    room["robots"]["jitter"] = 0.03
+    (tmp_path / "my_room.json").write_text(json.dumps(room))
+    env = dict(os.environ, COVSIM_BUILD_DIR=str(pathlib.Path(COVSIM).parents[1]),
+               PYTHONPATH=str(pathlib.Path(covsim.__file__).parents[1]))
+    docs = (SOURCE / "docs" / "planners.md").read_text()
+    script = str(SOURCE / "studies" / "compare_planners.py")
+    done = subprocess.run(
+        [sys.executable, script, str(tmp_path / "my_room.json"), "--out", str(tmp_path / "cmp"),
+         "--seeds", "2", "--planners", "tangent_bug,visibility_graph",
+         "--laws", "virtual_generators", "--jobs", "2"],
+        env=env, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    report = (tmp_path / "cmp" / "report.md").read_text()
+    assert "## my_room" in report and "## Over all of them" in report
+    rows = [line for line in report.splitlines() if line.startswith("| 1 ") or
+            line.startswith("| 2 ")]
+    assert len(rows) == 4  # 2 seeds x 2 planners, one law
+    assert all("| virtual_generators |" in r for r in rows)
+    for chart in ("convergence.svg", "path-ratio.svg", "step-time.svg"):
+        assert (tmp_path / "cmp" / chart).stat().st_size > 1000
+    assert (SOURCE / "docs" / "planners.md").read_text() == docs
+    # A name that is not a registered planner, and scenarios without a folder: errors.
+    bad = subprocess.run([sys.executable, script, str(tmp_path / "my_room.json"), "--out",
+                          str(tmp_path / "bad"), "--planners", "tangent_bugg"],
+                         env=env, capture_output=True, text=True)
+    assert bad.returncode == 1 and '"tangent_bugg" is not one of' in bad.stderr
+    bad = subprocess.run([sys.executable, script, str(tmp_path / "my_room.json")],
+                         env=env, capture_output=True, text=True)
+    assert bad.returncode == 1 and "needs --out DIR" in bad.stderr
