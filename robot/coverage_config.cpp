@@ -1,5 +1,7 @@
 #include "robot/coverage_config.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -226,15 +228,44 @@ ConfigKeys<CoverageConfig> loop_keys() {
                        "seconds between motion steps (each at most max_speed × loop2_period long)")
               .defaults_to(d.loop2_period.seconds()),
           &CoverageConfig::loop2_period),
-      // After "mode", which it depends on.
+      // After "mode" and "loop2_period", which it depends on, and before "loop1_period",
+      // which it excludes. Written back as loop1_period.
+      Key{ParamSpec::number("ratio", "",
+                            "the Lloyd/planner frequency ratio, \"periodic\" only: loop 1 every "
+                            "ratio motion steps (loop1_period = ratio × loop2_period; give one of "
+                            "the two); null: not set, as in a sweep's zip beside \"classic\"")
+              .positive()
+              .or_null()
+              .derived("unset"),
+          [](CoverageConfig& c, const ParamValue& v) {
+            if (std::holds_alternative<std::monostate>(v)) return;
+            const double ratio = std::get<double>(v);
+            if (c.mode != LoopMode::periodic)
+              throw ParamError("ratio", "ratio applies to \"mode\": \"periodic\" only");
+            const double period = ratio * c.loop2_period.seconds();
+            if (!(period >= kMinPeriod && period <= kMaxPeriod))
+              throw ParamError("ratio", fmt::format("ratio × loop2_period is {} s, outside the "
+                                                    "periods a run resolves ({} s to {} s)",
+                                                    period, kMinPeriod, kMaxPeriod));
+            c.loop1_period = SimTime::from_seconds(period);
+            c.loop_ratio = ratio;
+          },
+          [](const CoverageConfig&, const RunShape&) -> std::optional<ParamValue> {
+            return std::nullopt;
+          }},
       Key{period_param("loop1_period",
                        "seconds between Lloyd updates, \"periodic\" only (an error otherwise); "
-                       "loop1_period / loop2_period is the Lloyd/planner frequency ratio")
+                       "loop1_period / loop2_period is the Lloyd/planner frequency ratio; null: "
+                       "not set")
+              .or_null()
               .defaults_to(d.loop1_period.seconds()),
           [](CoverageConfig& c, const ParamValue& v) {
+            if (std::holds_alternative<std::monostate>(v)) return;
             if (c.mode != LoopMode::periodic)
               throw ParamError("loop1_period",
                                "loop1_period applies to \"mode\": \"periodic\" only");
+            if (c.loop_ratio)
+              throw ParamError("loop1_period", "give loop1_period or ratio, not both");
             config_value::from(v, c.loop1_period);
           },
           [](const CoverageConfig& c, const RunShape&) -> std::optional<ParamValue> {

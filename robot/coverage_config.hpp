@@ -97,7 +97,9 @@ struct CoverageConfig {
   LoopMode mode = LoopMode::classic;
   SimTime loop2_period = SimTime::from_ns(100'000'000);    // 0.1 s: one motion step
   SimTime loop1_period = SimTime::from_ns(1'000'000'000);  // periodic mode only
-  double max_speed = 0.1;                                  // m/s
+  // loops.ratio as given (loop1_period was set from it); unset otherwise.
+  std::optional<double> loop_ratio;
+  double max_speed = 0.1;  // m/s
   // Robots are disks of this radius (0: points): they plan and move in Ω ⊖ radius.
   double radius = 0.0;        // m
   AvoidanceConfig avoidance;  // between bodies (radius > 0)

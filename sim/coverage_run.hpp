@@ -88,6 +88,8 @@ struct CoverageOutcome {
                 discoveries = 0;
   double cost_known = NAN;
   double cost_ratio() const { return cost_real / cost_known; }
+  // loops.loop1_period / loops.loop2_period; NaN for the classic schedule.
+  double loop_ratio = NAN;
   // Wall-clock seconds spent in planner steps, and how many steps: the only measures besides
   // wall times that vary between runs.
   double planner_seconds = 0.0;

@@ -190,6 +190,8 @@ CoverageOutcome Simulation::outcome() const {
   out.localization_error_mean = c.localization_error_mean();
   out.localization_error_max = c.localization_error_max();
   out.fixes = c.fixes();
+  if (c.config().mode == LoopMode::periodic)
+    out.loop_ratio = c.config().loop1_period.seconds() / c.config().loop2_period.seconds();
   if (const Mapping* m = c.mapping()) {
     out.known = std::string(to_string(c.config().mapping.known));
     out.known_fraction = m->known_fraction();

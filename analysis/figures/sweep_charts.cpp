@@ -123,7 +123,11 @@ std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<Sw
     for (const std::string& metric : sweep_metrics()) {
       const bool chosen = std::find(measures.begin(), measures.end(), metric) != measures.end();
       // Chosen measures are drawn (wall time too); by default the ones that differ.
-      if (measures.empty() ? metric == "wall_time" || !differs(results, metric) : !chosen) continue;
+      // (The wall time varies by machine, the loop ratio is the setting's own: no chart.)
+      if (measures.empty()
+              ? metric == "wall_time" || metric == "loop_ratio" || !differs(results, metric)
+              : !chosen)
+        continue;
       // One line per value of the grouping parameter (pooling the others), or else per
       // combination of the other varying parameters; points at this parameter's values.
       std::map<std::string, std::map<double, std::vector<double>>> lines;

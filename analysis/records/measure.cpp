@@ -444,6 +444,13 @@ const std::vector<Measure>& measures() {
           .in_runs(45, "cost_ratio")
           .in_summary()
           .later(),
+      nullable("loops.ratio", "",
+               "the Lloyd/planner frequency ratio, loops.loop1_period / loops.loop2_period "
+               "(null: the classic schedule, loop 1 when a robot has settled)",
+               &O::loop_ratio)
+          .in_runs(46, "loop_ratio")
+          .in_summary()
+          .later(),
       member("planner.steps", K::integer, "", "planner steps taken", &O::planner_steps),
       outcome(
           "planner.step_time_us", K::number, "µs",

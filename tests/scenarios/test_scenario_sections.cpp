@@ -188,6 +188,36 @@ TEST_CASE("the sections' own rules stay: loop1_period in periodic mode, infinite
   CHECK_FALSE(describe_scenario(parse(ideal)).contains("network"));
 }
 
+TEST_CASE("the loop schedule by its ratio: loop1_period = ratio x loop2_period",
+          "[scenario][sections]") {
+  nlohmann::json j = nlohmann::json::parse(kBase);
+  j["loops"] = {{"mode", "periodic"}, {"loop2_period", 0.05}, {"ratio", 10}};
+  const Scenario s = parse(j);
+  CHECK(s.coverage.loop1_period == SimTime::from_seconds(0.5));
+  // Written back as the period it set, and loads back the same.
+  const nlohmann::json described = describe_scenario(s);
+  CHECK(described["loops"]["loop1_period"] == 0.5);
+  CHECK_FALSE(described["loops"].contains("ratio"));
+  CHECK(parse(described).coverage.loop1_period == s.coverage.loop1_period);
+  // One of the two; periodic only; a period a run resolves.
+  j["loops"]["loop1_period"] = 0.5;
+  CHECK_THAT(error_of(j), Catch::Contains("$.loops.loop1_period: give loop1_period or ratio, "
+                                          "not both"));
+  j["loops"].erase("loop1_period");
+  j["loops"]["mode"] = "classic";
+  CHECK_THAT(error_of(j),
+             Catch::Contains("$.loops.ratio: ratio applies to \"mode\": \"periodic\" only"));
+  j["loops"]["mode"] = "periodic";
+  j["loops"]["ratio"] = 1e9;
+  CHECK_THAT(error_of(j), Catch::Contains("outside the periods a run resolves"));
+  // null: not set, so that a sweep's zip can pair it with the classic schedule.
+  for (const char* key : {"ratio", "loop1_period"}) {
+    nlohmann::json classic = nlohmann::json::parse(kBase);
+    classic["loops"] = {{"mode", "classic"}, {key, nullptr}};
+    CHECK(error_of(classic).empty());
+  }
+}
+
 TEST_CASE("every key set away from its default is described and loads back the same",
           "[scenario][sections][describe]") {
   nlohmann::json j = nlohmann::json::parse(kBase);
@@ -199,6 +229,8 @@ TEST_CASE("every key set away from its default is described and loads back the s
       // separation goes with drawn robots, jitter is drawn already when written back.
       if (section.path == "robots" && name != "max_speed") continue;
       if (name == "mode") continue;
+      // ratio excludes loop1_period, set here: its own test below.
+      if (section.path == "loops" && name == "ratio") continue;
       // Mapping refuses the known projection and range noise set here: its own test below.
       if (section.path == "environment" || section.path == "mapping") continue;
       const nlohmann::json v = other_value(k.spec);

@@ -98,6 +98,7 @@ RunMeasures known_run() {
   o.obstacles_known_min = 2;
   o.discoveries = 5;
   o.cost_known = 0.096;
+  o.loop_ratio = 10.0;
   o.planner_steps = 200;
   o.planner_seconds = 0.0005;  // 2.5 µs a step
   o.stop_reason = "planner_failure";
@@ -138,6 +139,7 @@ const ojson kKnownFinal = ojson::parse(R"({
               "disagreement": 0.0625, "bytes": 4096, "bytes_new": 1024, "scans": 55, "obstacles": 3,
               "obstacles_known_min": 2, "discoveries": 5, "cost_known": 0.096,
               "cost_ratio": 1.25},
+  "loops": {"ratio": 10.0},
   "planner": {"steps": 200, "step_time_us": 2.5},
   "stop_reason": "planner_failure",
   "planner_failure": {"robot": 3, "time": 7.0, "goal": [1.0, 2.0], "position": [3.0, 4.0]},
@@ -160,7 +162,8 @@ const ojson kKnownRun = ojson::parse(R"({
   "channel_occupancy": 0.25, "phy_drops": 32, "gap_min": -0.005, "contact_time": 1.5,
   "wall_contacts": 3, "deadlocks": 4, "deadlock_time": 2.25, "turn_time": 6.5,
   "localization_error": 0.003, "known": "none", "known_fraction": 0.875,
-  "mapping_time_90": 10.5, "map_disagreement": 0.0625, "map_bytes": 4096, "cost_ratio": 1.25
+  "mapping_time_90": 10.5, "map_disagreement": 0.0625, "map_bytes": 4096, "cost_ratio": 1.25,
+  "loop_ratio": 10.0
 })");
 
 // docs/outputs.md's table of measures, as measures() gives it.
