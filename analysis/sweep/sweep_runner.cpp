@@ -143,6 +143,7 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
   }
   std::size_t finished = mine.size() - todo.size();
   const ProgressLine progress(options.progress, mine.size(), finished);
+  if (options.on_progress) options.on_progress(finished, failed, mine.size());
   // The workers take the runs to do in order; an interrupt stops every worker after its
   // current event, and the runs done are kept.
   std::atomic<std::size_t> next{0};
@@ -180,6 +181,7 @@ std::vector<SweepResult> run_sweep(const SweepSpec& spec, const fs::path& dir,
       } catch (...) {
         // stderr closed or full: the progress line is lost, not the sweep
       }
+      if (options.on_progress) options.on_progress(finished, failed, mine.size());
     }
   };
   // Anything else a worker meets (memory, say) stops the others and is the sweep's error,

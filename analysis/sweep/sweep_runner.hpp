@@ -4,6 +4,7 @@
 // writes the tables (analysis/sweep/sweep_tables.hpp) and, if it wants them, the charts
 // (analysis/figures/sweep_charts.hpp). Results do not depend on N.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct SweepOptions {
   std::size_t shard = 0;  // run only runs with index % shards == shard
   std::size_t shards = 1;
   bool keep_series = false;  // keep each run's metrics as DIR/runs/<index>.metrics.csv
+  // Called once before any run (with the runs found done) and after each run: runs done,
+  // of which failed, out of the total (of this shard). Calls do not overlap.
+  std::function<void(std::size_t done, std::size_t failed, std::size_t total)> on_progress = {};
 };
 
 // Throws std::runtime_error if DIR already holds a different sweep.

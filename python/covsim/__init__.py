@@ -12,6 +12,7 @@ import gzip as _gzip
 import json as _json
 import operator as _operator
 import os as _os
+import sys as _sys
 import tempfile as _tempfile
 
 from . import _build
@@ -139,11 +140,46 @@ def _as_scenario(s):
     return Scenario.from_file(_os.fspath(s))
 
 
-def sweep(spec, jobs=1, out=None, keep_series=False):
+def _progress_reporter(progress):
+    """The callback for sweep(progress=...): a callable as given; True: a tqdm bar where
+    tqdm is installed, else a line per run on stderr, as `covsim sweep` writes off a
+    terminal; None or False: none."""
+    if progress is None or progress is False:
+        return None
+    if callable(progress):
+        return progress
+    if progress is not True:
+        raise ValueError(f"sweep(progress={progress!r}): expected None, True or a callable "
+                         "(done, failed, total)")
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        def line(done, failed, total):
+            if done > 0:
+                print(f"sweep: {done}/{total} runs done, {failed} failed", file=_sys.stderr,
+                      flush=True)
+        return line
+    bar = {}
+
+    def update(done, failed, total):
+        if "bar" not in bar:
+            bar["bar"] = tqdm(total=total, initial=done, unit="run", desc="sweep")
+        b = bar["bar"]
+        b.set_postfix(failed=failed, refresh=False)
+        b.update(done - b.n)
+        if done == total:
+            b.close()
+    return update
+
+
+def sweep(spec, jobs=1, out=None, keep_series=False, progress=None):
     """Runs a sweep (docs/sweeps.md) on `jobs` C++ threads, the GIL released. spec: a sweep
     file's path, or its object (a "scenario" given by path is relative to the current
     folder). out: the output folder (runs/, runs.csv, summary.csv); a temporary one if None.
     keep_series: keep each run's metrics as out/runs/<index>.metrics.csv (give out).
+    progress: a callable (done, failed, total), called before the first run and after each
+    (one call at a time; an exception it raises ends the sweep once the runs under way
+    end); True: a tqdm bar where tqdm is installed, else a line per run on stderr.
     Returns the rows of runs.csv: a pandas DataFrame when pandas can be imported, else a list
     of dicts. Every setting is validated before anything runs (a ScenarioError naming the
     value). Results do not depend on jobs. A rerun into the same out reuses every finished run
@@ -157,6 +193,7 @@ def sweep(spec, jobs=1, out=None, keep_series=False):
         raise ValueError(f"sweep(jobs={jobs!r}): expected an integer from 1 to 1024, as "
                          "covsim sweep --jobs")
     jobs = count
+    reporter = _progress_reporter(progress)
     with _tempfile.TemporaryDirectory(prefix="covsim-sweep-") as scratch:
         if isinstance(spec, dict):
             spec = dict(spec)
@@ -173,7 +210,8 @@ def sweep(spec, jobs=1, out=None, keep_series=False):
             path = _os.fspath(spec)
         try:
             rows = _covsim._sweep(path, _os.fspath(out) if out is not None else
-                                  _os.path.join(scratch, "out"), int(jobs), bool(keep_series))
+                                  _os.path.join(scratch, "out"), int(jobs), bool(keep_series),
+                                  reporter)
         except ScenarioError as e:
             if path.startswith(scratch):
                 # The spec object was written to a scratch file the user never saw: name the

@@ -33,17 +33,32 @@ void bind_sweep(py::module_& m) {
       "summarises it.");
   m.def(
       "_sweep",
-      [](const std::string& file, const std::string& out, std::size_t jobs, bool keep_series) {
+      [](const std::string& file, const std::string& out, std::size_t jobs, bool keep_series,
+         const py::object& progress) {
         const SweepSpec spec = load_sweep(file);
         const OutputLock lock(out);  // one writer per folder, as `covsim sweep`
         std::vector<SweepResult> results;
+        SweepOptions options{std::max<std::size_t>(1, jobs), false, 0, 1, keep_series, {}};
+        // The callback runs on the sweep's threads, one call at a time, with the GIL taken; an
+        // exception it raises is raised here once the runs under way have ended.
+        std::optional<py::error_already_set> raised;
+        if (!progress.is_none())
+          options.on_progress = [&](std::size_t done, std::size_t failed, std::size_t total) {
+            py::gil_scoped_acquire gil;
+            if (raised) return;
+            try {
+              progress(done, failed, total);
+            } catch (py::error_already_set& e) {
+              raised = std::move(e);
+            }
+          };
         {
           py::gil_scoped_release release;
-          results = run_sweep(
-              spec, out, SweepOptions{std::max<std::size_t>(1, jobs), false, 0, 1, keep_series});
+          results = run_sweep(spec, out, options);
           write_runs_csv(std::filesystem::path(out) / "runs.csv", spec, results);
           write_summary_csv(std::filesystem::path(out) / "summary.csv", spec, results);
         }
+        if (raised) throw std::move(*raised);
         // Seeds that gave identical runs, as `covsim sweep` says on stderr.
         for (const std::string& line : identical_seed_warnings(spec, results))
           if (PyErr_WarnEx(PyExc_UserWarning, line.c_str(), 1) != 0) throw py::error_already_set();
@@ -67,7 +82,8 @@ void bind_sweep(py::module_& m) {
         }
         return rows;
       },
-      py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("keep_series") = false);
+      py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("keep_series") = false,
+      py::arg("progress") = py::none());
 }
 
 }  // namespace covsim::python

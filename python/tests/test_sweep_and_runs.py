@@ -111,3 +111,29 @@ def test_seeds_that_give_one_run_are_said_and_counted_once(scenarios, tmp_path):
         summary = list(csv.DictReader(f))
     assert [s["distinct_runs"] for s in summary] == ["1", "2"]
     assert summary[0]["sim_time_std"] == ""
+
+
+def test_a_sweep_reports_its_progress(scenarios, tmp_path, capsys):
+    spec = {"scenario": str(scenarios / "u_shape.json"),
+            "grid": {"robots.jitter": [0.02], "sensor.range": [0.5, None]}, "seeds": [1, 2]}
+    calls = []
+    covsim.sweep(spec, jobs=2, out=tmp_path / "sw",
+                 progress=lambda done, failed, total: calls.append((done, failed, total)))
+    assert calls[0] == (0, 0, 4) and calls[-1] == (4, 0, 4)
+    assert [c[0] for c in calls] == list(range(5))
+    # Resumed: the runs found done are counted before any runs.
+    calls.clear()
+    covsim.sweep(spec, out=tmp_path / "sw", progress=lambda *c: calls.append(c))
+    assert calls == [(4, 0, 4)]
+    # True: a tqdm bar, or without tqdm a line per run on stderr.
+    covsim.sweep(spec, out=tmp_path / "again", progress=True)
+    err = capsys.readouterr().err
+    assert "4/4" in err
+    # A callback that raises ends the sweep with its exception.
+    def stop(done, failed, total):
+        if done == 1:
+            raise KeyboardInterrupt("enough")
+    with pytest.raises(KeyboardInterrupt, match="enough"):
+        covsim.sweep(spec, jobs=1, out=tmp_path / "stopped", progress=stop)
+    with pytest.raises(ValueError, match="progress='yes'"):
+        covsim.sweep(spec, progress="yes")
