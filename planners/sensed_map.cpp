@@ -103,19 +103,20 @@ bool SensedMap::add_stretches(Vec2 a, Vec2 b, double merge, bool exact) {
                    : g.from <= 0.0 ? a
                                    : a + (g.from / len) * (b - a);
     const Vec2 v = g.after ? pieces_[*g.after].a : g.to >= len ? b : a + (g.to / len) * (b - a);
+    // A stretch extends a piece of its own kind only: a touched stretch joined to a noisy
+    // piece would lose what the touch showed, or lend its exactness to a noisy one.
     std::uint32_t k = 0;
-    if (g.before) {
+    if (g.before && pieces_[*g.before].exact == exact) {
       k = *g.before;
       pieces_[k].b = v;
-      pieces_[k].exact = pieces_[k].exact && exact;
-    } else if (g.after) {
+    } else if (g.after && pieces_[*g.after].exact == exact) {
       k = *g.after;
       pieces_[k].a = u;
-      pieces_[k].exact = pieces_[k].exact && exact;
     } else {
       k = static_cast<std::uint32_t>(pieces_.size());
       pieces_.push_back(Piece{u, v, exact});
       seen_.push_back(0);
+      cells_.emplace_back();
     }
     added_.push_back(Piece{u, v, exact});
     mark(u, v, k);
@@ -127,14 +128,101 @@ void SensedMap::mark(Vec2 a, Vec2 b, std::uint32_t k) {
   for_each_cell(a, b, [&](std::int32_t i, std::int32_t j) {
     if (i < 0 || j < 0 || i >= nx_ || j >= ny_) return true;
     const std::uint32_t c = index(i, j);
-    if (std::find(in_cell_[c].begin(), in_cell_[c].end(), k) == in_cell_[c].end())
+    if (std::find(in_cell_[c].begin(), in_cell_[c].end(), k) == in_cell_[c].end()) {
       in_cell_[c].push_back(k);
+      cells_[k].push_back(c);
+    }
     if (wall_[c] == 0) {
       wall_[c] = 1;
       ++wall_cells_;
+      ++version_;
     }
     return true;
   });
+}
+
+void SensedMap::remove(std::uint32_t k) {
+  for (const std::uint32_t c : cells_[k]) {
+    auto& in = in_cell_[c];
+    in.erase(std::find(in.begin(), in.end(), k));
+    if (in.empty()) {
+      wall_[c] = 0;
+      --wall_cells_;
+      ++version_;
+    }
+  }
+  const auto last = static_cast<std::uint32_t>(pieces_.size() - 1);
+  if (k != last) {
+    for (const std::uint32_t c : cells_[last])
+      *std::find(in_cell_[c].begin(), in_cell_[c].end(), last) = k;
+    pieces_[k] = pieces_[last];
+    cells_[k] = std::move(cells_[last]);
+  }
+  pieces_.pop_back();
+  cells_.pop_back();
+  seen_.pop_back();
+}
+
+void SensedMap::supersede(Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double len = norm(d);
+  if (len <= tol_) return;
+  const Vec2 e = d / len;
+  // The noisy pieces in the cells within one of the stretch's (a piece within the noise of it
+  // may lie in the next cell).
+  std::vector<std::uint32_t> near;
+  ++query_;
+  for_each_cell(a, b, [&](std::int32_t i, std::int32_t j) {
+    for (std::int32_t dj = -1; dj <= 1; ++dj)
+      for (std::int32_t di = -1; di <= 1; ++di) {
+        const std::int32_t ci = i + di, cj = j + dj;
+        if (ci < 0 || cj < 0 || ci >= nx_ || cj >= ny_) continue;
+        for (const std::uint32_t k : in_cell_[index(ci, cj)])
+          if (seen_[k] != query_) {
+            seen_[k] = query_;
+            if (!pieces_[k].exact && dot(pieces_[k].b - pieces_[k].a, d) > 0.0) near.push_back(k);
+          }
+      }
+    return true;
+  });
+  // Highest index first: removing a piece moves only the last one.
+  std::sort(near.rbegin(), near.rend());
+  std::vector<Piece> kept;
+  bool removed = false;
+  for (const std::uint32_t k : near) {
+    const Piece s = pieces_[k];
+    // Along s (t from 0 to 1): the distance off the stretch's line and the position along it
+    // are linear in t; the part explained has both within bounds.
+    double lo = 0.0, hi = 1.0;
+    const auto within = [&](double v0, double v1, double from, double to) {
+      // {t : from <= v0 + (v1 - v0) t <= to}, narrowing [lo, hi].
+      const double dv = v1 - v0;
+      if (dv == 0.0) {
+        if (v0 < from || v0 > to) hi = -1.0;
+        return;
+      }
+      double t0 = (from - v0) / dv, t1 = (to - v0) / dv;
+      if (t0 > t1) std::swap(t0, t1);
+      lo = std::max(lo, t0);
+      hi = std::min(hi, t1);
+    };
+    within(cross(e, s.a - a), cross(e, s.b - a), -merge_, merge_);
+    within(dot(e, s.a - a), dot(e, s.b - a), 0.0, len);
+    const double sl = distance(s.a, s.b);
+    if (!((hi - lo) * sl > tol_)) continue;
+    removed = true;
+    remove(k);
+    if (lo * sl > tol_) kept.push_back(Piece{s.a, s.a + lo * (s.b - s.a), false});
+    if ((1.0 - hi) * sl > tol_) kept.push_back(Piece{s.a + hi * (s.b - s.a), s.b, false});
+  }
+  if (removed) ++supersessions_;
+  for (const Piece& p : kept) {
+    const auto k = static_cast<std::uint32_t>(pieces_.size());
+    pieces_.push_back(p);
+    seen_.push_back(0);
+    cells_.emplace_back();
+    mark(p.a, p.b, k);
+  }
 }
 
 bool SensedMap::add(const SensorReading& r) {
@@ -148,9 +236,9 @@ bool SensedMap::add(const SensorReading& r) {
     if (!(len > 0.0)) continue;
     const double at = project_to_segment(r.position, c.a, c.b).t * len;
     const double from = std::max(0.0, at - h_), to = std::min(len, at + h_);
-    added = add_stretches(c.a + (from / len) * (c.b - c.a), c.a + (to / len) * (c.b - c.a), tol_,
-                          true) ||
-            added;
+    const Vec2 u = c.a + (from / len) * (c.b - c.a), v = c.a + (to / len) * (c.b - c.a);
+    if (spread_ > 0.0) supersede(u, v);
+    added = add_stretches(u, v, tol_, true) || added;
   }
   return added;
 }

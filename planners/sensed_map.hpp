@@ -64,8 +64,13 @@ class SensedMap {
   bool free(std::int32_t i, std::int32_t j) const {
     return i >= 0 && j >= 0 && i < nx_ && j < ny_ && wall_[index(i, j)] == 0;
   }
-  // Grows whenever a cell becomes a wall cell.
+  // The wall cells held now.
   std::size_t wall_cells() const { return wall_cells_; }
+  // Changes whenever a cell becomes a wall cell or stops being one.
+  std::size_t version() const { return version_; }
+  // How many touches superseded noisy pieces (the map lost walls): a goal it had cut off may
+  // be reachable again.
+  std::size_t supersessions() const { return supersessions_; }
 
   struct Piece {
     Vec2 a, b;  // free space on the left of a -> b
@@ -111,8 +116,14 @@ class SensedMap {
   std::vector<Gap> uncovered(Vec2 a, Vec2 b, double merge) const;
   // add_wall, a piece within `merge` of the walls held covering them; `exact` when touched.
   bool add_stretches(Vec2 a, Vec2 b, double merge, bool exact);
+  // A touched stretch a -> b supersedes the noisy pieces it explains: of each facing the same
+  // way, the part beside it within the noise of its line is dropped (the touch shows where
+  // that wall is; left, a wall seen a little too near hides what lies just behind the wall).
+  void supersede(Vec2 a, Vec2 b);
   // Marks the cells a -> b meets as wall cells held by piece k.
   void mark(Vec2 a, Vec2 b, std::uint32_t k);
+  // Drops piece k (the last piece takes its index).
+  void remove(std::uint32_t k);
   // Whether the direction d leaves p into the free side of the pieces p lies on.
   bool leaves_free(Vec2 p, Vec2 d) const;
   // The squared distance from p to cell (i, j)'s closed square.
@@ -122,10 +133,11 @@ class SensedMap {
   Vec2 origin_;
   std::int32_t nx_ = 0, ny_ = 0;
   std::vector<std::uint8_t> wall_;
-  std::size_t wall_cells_ = 0;
+  std::size_t wall_cells_ = 0, version_ = 0, supersessions_ = 0;
   std::vector<Piece> pieces_;
   std::vector<Piece> added_;
   std::vector<std::vector<std::uint32_t>> in_cell_;  // the pieces touching each cell
+  std::vector<std::vector<std::uint32_t>> cells_;    // the cells marked for each piece
   mutable std::vector<std::uint32_t> seen_;          // per piece: the last query that met it
   mutable std::uint32_t query_ = 0;
 };

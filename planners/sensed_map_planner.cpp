@@ -16,6 +16,7 @@ void SensedMapPlanner::set_goal(Vec2 goal) {
   goal_ = goal;
   planned_ = projecting_ = settling_ = escaping_ = false;
   escapes_ = 0;
+  reroutes_ = 0;
   proposed_from_ = Vec2{INFINITY, INFINITY};
   slide_.reset();
   status_ = PlanStatus::moving;
@@ -148,7 +149,21 @@ PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
   const std::size_t first_new = seen_pieces_;
   const bool changed = map_->added().size() != first_new;
   seen_pieces_ = map_->added().size();
+  // A touch superseded noisy pieces: a goal they cut off may be reachable after all.
+  const bool lost = map_->supersessions() != seen_supersessions_;
+  seen_supersessions_ = map_->supersessions();
   if (status_ != PlanStatus::moving) return PlanStep{x, status_};
+  // Headed for a projection, or settling there: the walls lost may open a way to the goal.
+  // (A bounded number of times per goal: a wall seen through noise now and then beside a
+  // touched one is superseded again, and a goal outside Ω by less than the noise drew a
+  // robot back and forth, traced on case 1944 at 2 m.)
+  const bool reroute = lost && projecting_ && reroutes_ < kMaxReroutes;
+  if (reroute) {
+    ++reroutes_;
+    projecting_ = settling_ = false;
+    slide_.reset();
+    replan(x);
+  }
   if (settling_) return settle(r, max_step);
   // Walls only ever add: a path still clear stays the best the map allows, but for the way
   // to a projection when a wall nearer the goal came into view.
@@ -168,8 +183,12 @@ PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
     // Out, or held where it stood: plan again (another cell, if still no leg leaves).
     escaping_ = false;
     replan(x);
-  } else if (map_->spread() > 0.0 && short_by <= 2.0 * map_->merge()) {
+  } else if (reroute) {
+    // Planned above.
+  } else if (map_->spread() > 0.0 && short_by <= 2.0 * map_->merge() &&
+             map_->clear(x, follower_.path().back())) {
     // On a noisy map the end may lie behind the wall that stopped the robot, within the noise.
+    // (Unless the touch that stopped it shows the end behind that wall: it plans round.)
     return start_settling(r, max_step);
   } else if (!planned_ || stopped || (changed && (nearer_wall() || !ahead_clear(x, first_new)))) {
     replan(x);

@@ -18,7 +18,9 @@
 // straight for the goal, reaching it if nothing is in the way; against a wall it touches it
 // slides to the point of the touched walls closest to the goal and tries again from there,
 // and reports `projected` where the goal lies straight into the walls it touches. The
-// distance to the goal only falls on the way, so the settling ends.
+// distance to the goal only falls on the way, so the settling ends. A touch supersedes the
+// noisy pieces beside it (SensedMap::add): a robot stopped by a wall on its way learns that
+// the goal lies behind it, not within the noise of it, and plans round.
 #include <cmath>
 #include <cstddef>
 #include <memory>
@@ -73,7 +75,11 @@ class SensedMapPlanner : public Planner {
 
   double tol_;
   std::shared_ptr<SensedMap> map_;
-  std::size_t seen_pieces_ = 0;  // the map's added stretches when it last looked
+  std::size_t seen_pieces_ = 0;         // the map's added stretches when it last looked
+  std::size_t seen_supersessions_ = 0;  // and its supersessions
+  // Plans for the goal again after a touch superseded noisy pieces, while projecting.
+  static constexpr int kMaxReroutes = 10;
+  int reroutes_ = 0;
   Vec2 goal_;
   bool planned_ = false, projecting_ = false;
   PlanStatus status_ = PlanStatus::reached, arrival_ = PlanStatus::reached;

@@ -23,7 +23,7 @@ class SensedVisibilityGraph final : public SensedMapPlanner {
  private:
   std::optional<std::vector<Vec2>> plan(Vec2 start, std::uint32_t from, Vec2 goal,
                                         std::uint32_t to) override;
-  // The corner cells, for the map as it was when it had `corners_version_` wall cells.
+  // The corner cells, for the map as it was at its version `corners_version_`.
   std::vector<std::uint32_t> corners_;
   std::uint64_t corners_version_ = UINT64_MAX;
 };

@@ -277,11 +277,38 @@ TEST_CASE("sensed map: under range noise a touch is exact, and a noisy wall trap
   CHECK_FALSE(m.pieces()[0].exact);
   // Seen again 1 cm off: within 3σ, the same wall.
   CHECK_FALSE(m.add_wall({1.49, 0.6}, {1.49, 1.4}));
-  // Touched where it is: a new, exact stretch however near the noisy one.
+  // Touched where it is: a new, exact stretch however near the noisy one, which it
+  // supersedes beside it (a cell's side either way of the touch, y in [0.95, 1.05]).
   const Environment env = room_with_box();
   CHECK(m.add(sense(env, {1.5, 1.0}, 0.0)));
-  REQUIRE(m.pieces().size() == 2);
-  CHECK(m.pieces()[1].exact);
+  REQUIRE(m.pieces().size() == 3);
+  int exact_pieces = 0;
+  for (const SensedMap::Piece& p : m.pieces()) {
+    INFO("piece (" << p.a.x << ", " << p.a.y << ") -> (" << p.b.x << ", " << p.b.y << ")");
+    if (p.exact) {
+      ++exact_pieces;
+      CHECK(p.a.x == 1.5);
+      CHECK(std::min(p.a.y, p.b.y) == Approx(0.95));
+      CHECK(std::max(p.a.y, p.b.y) == Approx(1.05));
+    } else {
+      CHECK(p.a.x == 1.48);
+      CHECK((std::max(p.a.y, p.b.y) <= 0.95 + 1e-12 || std::min(p.a.y, p.b.y) >= 1.05 - 1e-12));
+    }
+  }
+  CHECK(exact_pieces == 1);
+  // A noisy stretch that continues the touched piece is a piece of its own: the touched one
+  // stays exact.
+  SensedMap fresh(room_box(), 0.05, 1e-9, 0.01);
+  CHECK(fresh.add(sense(env, {1.5, 1.0}, 0.0)));
+  CHECK(fresh.add_wall({1.5, 1.05}, {1.5, 1.4}));
+  REQUIRE(fresh.pieces().size() == 2);
+  CHECK(fresh.pieces()[0].exact);
+  CHECK(std::max(fresh.pieces()[0].a.y, fresh.pieces()[0].b.y) == Approx(1.05));
+  CHECK_FALSE(fresh.pieces()[1].exact);
+  // Just behind the true face (x = 1.505, within 3σ of the wall seen): reachable from the
+  // room by the noisy wall alone, behind an exact wall beside the touch.
+  CHECK_FALSE(m.clear({1.0, 1.0}, {1.505, 1.0}));
+  CHECK(m.clear({1.0, 0.7}, {1.505, 0.7}));
   // A robot standing between the noisy wall and the true one (x = 1.49) leaves to the free
   // side, not into the box; on an exact wall the leeway is the tolerance only.
   CHECK(m.clear({1.49, 0.8}, {1.0, 0.8}));
@@ -323,5 +350,40 @@ TEST_CASE("sensed map planners under range noise settle by touch on ∂Ω", "[se
         CHECK(distance(x, goal) <= 1e-9);
       }
     }
+  }
+}
+
+TEST_CASE("sensed map planners under range noise reach a goal on a thin wall's far face",
+          "[sensed_map]") {
+  // A wall 3 cm thick (x from 1.5 to 1.53), every reading showing its west face 2 cm too far
+  // (x = 1.52, within the noise): the goal on its east face lies within 3σ of the wall seen,
+  // so the map lets the robot reach it from the west. The touch at x = 1.5 shows the goal
+  // behind the wall; the robot goes round and reaches it.
+  const Environment env({{0, 0}, {4, 0}, {4, 2}, {0, 2}},
+                        {{{1.5, 0.5}, {1.53, 0.5}, {1.53, 1.5}, {1.5, 1.5}}});
+  const Vec2 goal{1.53, 1.0};
+  for (const char* type : {"grid_astar", "visibility_graph"}) {
+    INFO(type);
+    PlannerConfig c;
+    c.type = type;
+    c.params = sensed(0.05);
+    auto planner = planner_source(c, PlannerContext{env, SensorSpec{0.01}})();
+    planner->set_goal(goal);
+    Vec2 x{0.5, 1.0};
+    PlanStatus status = PlanStatus::moving;
+    double path = 0.0;
+    for (int k = 0; k < 4000 && status == PlanStatus::moving; ++k) {
+      SensorReading r = sense(env, x, 0.5);
+      for (SensedPiece& p : r.visible().pieces)
+        if (p.a.x == 1.5 && p.b.x == 1.5) p.a.x = p.b.x = 1.52;
+      const PlanStep s = planner->step(r, 0.02);
+      const Vec2 next = env.advance(x, s.next);
+      path += distance(x, next);
+      x = next;
+      status = s.status;
+    }
+    CHECK(status == PlanStatus::reached);
+    CHECK(distance(x, goal) <= 1e-9);
+    CHECK(path > 2.0);  // round the wall, not through it
   }
 }
