@@ -167,7 +167,7 @@ bool is_record_file(const std::string& name) {
        {std::string_view("scenario.json"), std::string_view("final.json"),
         trajectory_file_name(false), trajectory_file_name(true), std::string_view("metrics.csv"),
         std::string_view("map.csv"), std::string_view("planner_map.csv")})
-    if (name == f) return true;
+    if (name == f || name == std::string(f) + "-metadata.json") return true;
   return false;
 }
 

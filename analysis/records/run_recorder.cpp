@@ -40,6 +40,20 @@ std::string trajectory_header() {
   return out;
 }
 
+std::vector<CsvColumn> trajectory_columns() {
+  using K = FieldKind;
+  return {{"t", K::number, "s", "simulated time"},
+          {"robot", K::integer, "", "the robot's index, in scenario order"},
+          {"x", K::number, "m", "the robot's position"},
+          {"y", K::number, "m", "the robot's position"},
+          {"vx", K::number, "m", "its virtual generator"},
+          {"vy", K::number, "m", "its virtual generator"},
+          {"tx", K::number, "m", "its virtual target (the baselines: their loop-1 target)"},
+          {"ty", K::number, "m", "its virtual target (the baselines: their loop-1 target)"},
+          {"rx", K::number, "m", "its real target"},
+          {"ry", K::number, "m", "its real target"}};
+}
+
 std::string_view trajectory_file_name(bool compressed) {
   return compressed ? "trajectory.csv.gz" : "trajectory.csv";
 }
@@ -235,6 +249,13 @@ void RunRecorder::commit() {
   if (map_) map_->commit();
   if (planner_map_) planner_map_->commit();
   metrics_.commit();
+  // The columns' units beside the two tables (CSVW metadata).
+  std::vector<CsvColumn> metrics;
+  for (const auto& f : metrics_fields())
+    metrics.push_back({f.name, f.kind, f.unit, f.description});
+  write_csv_metadata(dir_ / "metrics.csv", "covsim run: metrics samples", metrics);
+  write_csv_metadata(dir_ / trajectory_file_name(gzip_ != nullptr),
+                     "covsim run: a row per robot per motion step", trajectory_columns());
 }
 
 }  // namespace covsim

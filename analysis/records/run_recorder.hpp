@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/records/csv_metadata.hpp"
 #include "analysis/records/known_cells.hpp"
 #include "analysis/records/planner_map_log.hpp"
 #include "analysis/records/robot_track.hpp"
@@ -39,6 +40,9 @@ inline constexpr std::array<std::string_view, 10> kTrajectoryColumns{
     "t", "robot", "x", "y", "vx", "vy", "tx", "ty", "rx", "ry"};
 // The columns joined by commas.
 std::string trajectory_header();
+// The columns with their units and meanings, in kTrajectoryColumns' order (for the CSVW
+// metadata written beside the file).
+std::vector<CsvColumn> trajectory_columns();
 
 // "trajectory.csv", or "trajectory.csv.gz" when compressed.
 std::string_view trajectory_file_name(bool compressed);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -178,6 +179,23 @@ TEST_CASE("a compressed recording is the uncompressed one's bytes, gzipped", "[r
   CHECK(gunzip(gz) == csv);
   // Nothing else differs, and nothing is left over.
   CHECK(read_bytes(dirs[0] / "metrics.csv") == read_bytes(dirs[1] / "metrics.csv"));
+  // The columns' units beside each table (CSVW), in the header's order.
+  for (const fs::path& table : {dirs[0] / "trajectory.csv", dirs[1] / "trajectory.csv.gz",
+                                dirs[0] / "metrics.csv"}) {
+    INFO(table);
+    const auto meta = nlohmann::json::parse(read_bytes(table.string() + "-metadata.json"));
+    CHECK(meta["url"] == table.filename().string());
+    std::string header;
+    std::map<std::string, std::string> unit;
+    for (const auto& c : meta["tableSchema"]["columns"]) {
+      header += (header.empty() ? "" : ",") + c["name"].get<std::string>();
+      unit[c["name"]] = c.value("schema:unitText", "");
+    }
+    const std::string first = table.extension() == ".gz" ? csv : read_bytes(table);
+    CHECK(first.rfind(header + "\n", 0) == 0);
+    CHECK(unit["t"] == "s");
+    if (table.filename() != "metrics.csv") CHECK(unit["x"] == "m");
+  }
   CHECK_FALSE(fs::exists(dirs[1] / "trajectory.csv"));
   CHECK_FALSE(fs::exists(dirs[1] / "trajectory.csv.gz.partial"));
   for (const fs::path& d : dirs)
@@ -201,6 +219,8 @@ TEST_CASE("a run folder's outputs include both trajectory files", "[recorder][fi
   CHECK(is_record_file("trajectory.csv.gz.partial"));
   CHECK_FALSE(is_record_file("trajectory.csv.bz2"));
   CHECK_FALSE(is_record_file("notes.txt"));
+  CHECK(is_record_file("metrics.csv-metadata.json"));
+  CHECK(is_record_file("trajectory.csv.gz-metadata.json"));
   CHECK_FALSE(is_record_file("scene.svg"));  // a figure: analysis/figures' is_run_output
   CHECK(trajectory_file_name(false) == "trajectory.csv");
   CHECK(trajectory_file_name(true) == "trajectory.csv.gz");
