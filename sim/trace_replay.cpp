@@ -61,7 +61,7 @@ TraceHeader trace_header_for(const Scenario& scenario, const std::filesystem::pa
   return header;
 }
 
-ReplayReport replay_trace(const std::filesystem::path& trace) {
+ReplayReport replay_trace(const std::filesystem::path& trace, CoverageObserver* observer) {
   TraceReader reader(trace);
   const std::string embedded = header_value(reader.header(), "scenario");
   if (embedded.empty()) {
@@ -87,7 +87,7 @@ ReplayReport replay_trace(const std::filesystem::path& trace) {
   ReplayReport report;
   report.build_differences = build_differences(provenance_of(reader.header()));
   try {
-    const CoverageOutcome out = run_coverage(scenario, nullptr, &comparer);
+    const CoverageOutcome out = run_coverage(scenario, observer, &comparer);
     report.fingerprint = out.fingerprint;
     // The replay ended: so must the trace.
     if (std::optional<TraceRecord> extra = reader.next()) {

@@ -23,6 +23,7 @@ struct ReplayReport {
 };
 
 struct Scenario;
+class CoverageObserver;
 
 // The header of a run's trace: seed, scenario hash, and the whole scenario with the folder
 // its files are relative to, so that the trace alone is enough to replay the run.
@@ -30,6 +31,7 @@ TraceHeader trace_header_for(const Scenario& scenario, const std::filesystem::pa
 
 // The trace must carry the scenario (as `covsim run --trace` writes it). Throws
 // ScenarioError for a trace without one, std::runtime_error for a malformed trace.
-ReplayReport replay_trace(const std::filesystem::path& trace);
+// `observer`, if given, sees the replayed run (up to its divergence).
+ReplayReport replay_trace(const std::filesystem::path& trace, CoverageObserver* observer = nullptr);
 
 }  // namespace covsim

@@ -97,6 +97,15 @@ execute_process(COMMAND ${COVSIM} replay ${WORK}/t.trace RESULT_VARIABLE rc OUTP
 if(NOT rc EQUAL 0 OR NOT out MATCHES "replay matches: ${events} events, fingerprint ${fp}")
   message(FATAL_ERROR "replay: expected a match of ${events} events with fingerprint ${fp}, got ${rc}: ${out} ${err}")
 endif()
+# With the run's folder: the same match; a folder that is not a run's is bad input.
+execute_process(COMMAND ${COVSIM} replay ${WORK}/t.trace --run ${WORK}/t RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "replay matches: ${events} events")
+  message(FATAL_ERROR "replay --run: expected a match, got ${rc}: ${out} ${err}")
+endif()
+execute_process(COMMAND ${COVSIM} replay ${WORK}/t.trace --run ${WORK}/nowhere RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--run .*nowhere: not a run folder")
+  message(FATAL_ERROR "replay --run nowhere: expected exit 2, got ${rc}: ${err}")
+endif()
 # Relative names from the scenario's own folder, as a user in it types them.
 file(MAKE_DIRECTORY ${WORK}/here)
 file(COPY ${SOURCE}/scenarios/u_shape.json DESTINATION ${WORK}/here)
