@@ -183,6 +183,15 @@ grep -q 'warning: setting 0, sensor.range=0.5: 1 distinct run of 2 (seed 2 = see
 grep -q '^0,0.5,2,0,1,1,' same/summary.csv || fail "distinct_runs: $(cat same/summary.csv)"
 bad "\"cost_reel\" is not a measure.*did you mean 'cost_real'" sweep sweep.json --out nope --measures cost_reel
 [ ! -e nope ] || fail "a sweep with a bad --measures left its folder"
+# docs/sweeps.md's worked example: planners by schedule on dead_ends, whose starts are drawn
+# per seed: every seed its own run, charts by planner, by mode and against the ratio.
+"$covsim" sweep "$source/examples/sweeps/dead_ends_planners.json" --out de --jobs 2 > /dev/null 2> de.err
+! grep -q "distinct run" de.err || fail "dead_ends' seeds repeated a run: $(cat de.err)"
+for chart in sim_time_by_planner.type sim_time_by_loops.mode sim_time_vs_loops.ratio; do
+  check_svg "de/$chart.svg"
+done
+[ "$(cut -d, -f7 de/summary.csv | sort -u | tr '\n' ' ')" = "3 distinct_runs " ] ||
+  fail "dead_ends' distinct runs: $(cut -d, -f1-8 de/summary.csv)"
 svgs=$(ls s/*_vs_sensor.range.svg | wc -l)
 [ "$svgs" -ge 5 ] || fail "the sweep drew $svgs plots"
 for f in s/*.svg; do check_svg "$f"; done
