@@ -302,9 +302,10 @@ void write_run_video(const Scenario& scenario, const CoverageOutcome& outcome,
         encoder.write(px + static_cast<std::ptrdiff_t>(y) * canvas.stride(),
                       static_cast<std::size_t>(w) * 4);
       if (line.due())
-        line.show(fmt::format("video: frame {} of {} ({:.0f}%), {:.0f} s", f + 1, frames,
-                              100.0 * static_cast<double>(f + 1) / static_cast<double>(frames),
-                              line.seconds()));
+        line.show(fmt::format(
+            "video: frame {} of {} ({:.0f}%), {:.0f} s, about {:.0f} s left", f + 1, frames,
+            100.0 * static_cast<double>(f + 1) / static_cast<double>(frames), line.seconds(),
+            line.seconds() / static_cast<double>(f + 1) * static_cast<double>(frames - f - 1)));
     }
     // A GIF's palette is made from every frame once they are all in: say so while it is.
     if (line.drawn()) line.show(fmt::format("video: {} frames in, ffmpeg finishing", frames));

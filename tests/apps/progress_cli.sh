@@ -24,7 +24,7 @@ done
 # (To covsim itself: `script` ends its session on a signal.)
 pkill -TERM -f "^$covsim run .* --out $work/tty " || true
 wait
-grep -q "run: t = .* of 4000 s simulated (.*%), .*/30 robots settled" typescript ||
+grep -q "run: t = .* of 4000 s simulated (.*%), .*/30 robots settled, [0-9]* s, at most [0-9]* s more at this pace" typescript ||
   fail "no progress line on a terminal: $(tr '\r' '\n' < typescript | head -5)"
 # Cleared before the last message: that starts its line after a carriage return.
 tr '\r' '\n' < typescript | grep -Eq "^(converged after|covsim: interrupted by SIGTERM)" ||
