@@ -165,8 +165,9 @@ PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
     replan(x);
   }
   if (settling_) return settle(r, max_step);
-  // Walls only ever add: a path still clear stays the best the map allows, but for the way
-  // to a projection when a wall nearer the goal came into view.
+  // Walls only ever add (but for the noisy pieces a touch supersedes, above): a path still
+  // clear stays the best the map allows, but for the way to a projection when a wall nearer
+  // the goal came into view.
   // Stopped short of the path's end: by a wall it could not see (a contact sensor's).
   const bool ended = planned_ && follower_.done() && !follower_.path().empty();
   const double short_by = ended ? distance(x, follower_.path().back()) : INFINITY;
