@@ -13,7 +13,9 @@ constexpr std::uint32_t kPalette[] = {0xd62728, 0x1f5fbf, 0x2ca02c, 0xff7f0e,
                                       0x9467bd, 0x8c564b, 0xe377c2, 0x7f7f7f};
 }  // namespace
 
-std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
+namespace {
+// One chart into the band of the canvas from y0 down h, the full width w.
+void draw_chart(Canvas& c, const LineChart& chart, const FigureFile& file, double y0, double h) {
   const double f = file.size.font, u = file.size.unit(), pad = 0.6 * f, w = file.size.width;
   const auto visible = [&](double x, double y) {
     return std::isfinite(x) && std::isfinite(y) && (!chart.log_y || y > 0) &&
@@ -33,6 +35,11 @@ std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
     for (const auto& [x, y] : s.samples)
       take(x, y);
   }
+  for (const double y : {chart.y_cover_lo, chart.y_cover_hi})
+    if (std::isfinite(y) && (!chart.log_y || y > 0)) {
+      data.lo.y = std::min(data.lo.y, y);
+      data.hi.y = std::max(data.hi.y, y);
+    }
   // Linear charts start at zero when their data are positive: costs and times compare.
   if (!chart.log_y && data.lo.y > 0) data.lo.y = 0;
   const auto line = [&](std::size_t k) {
@@ -52,20 +59,17 @@ std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
   const double legend_h = legend.empty() ? 0 : legend.size(columns).y + pad;
   const double title_font = f + 1;
   const auto title = wrap_text(chart.title, title_font, w - 2 * pad);
-  const double top = pad + 1.3 * title_font * static_cast<double>(title.size()) + pad;
-  const double h = file.size.height > 0 ? file.size.height : 0.62 * w;
+  const double top = y0 + pad + 1.3 * title_font * static_cast<double>(title.size()) + pad;
   const bool categorical = !chart.x_categories.empty();
   Axes a = categorical ? category_axes(chart.x_categories, data, {0, 0}, {1, 1})
                        : chart_axes(data, {0, 0}, {1, 1}, chart.log_y, chart.log_x);
   a.lo = {axes_left_room(a, f), top};
-  a.hi = {w - 1.5 * pad, h - legend_h - axes_bottom_room(f)};
+  a.hi = {w - 1.5 * pad, y0 + h - legend_h - axes_bottom_room(f)};
 
-  Canvas c(file, w, h);
-  c.rectangle({0, 0}, {w, h}, Colour::hex(0xffffff));
   const Colour ink = Colour::hex(0x222222);
   draw_axes(c, a, chart.x_label, chart.y_label, true, f);
   for (std::size_t k = 0; k < title.size(); ++k)
-    c.text({pad, pad + title_font * (1.3 * k + 1.0)}, title[k], title_font, ink);
+    c.text({pad, y0 + pad + title_font * (1.3 * k + 1.0)}, title[k], title_font, ink);
   c.push_clip({{a.lo, {a.hi.x, a.lo.y}, a.hi, {a.lo.x, a.hi.y}}});
   for (std::size_t k = 0; k < chart.series.size() && categorical; ++k) {
     // Series side by side within a category's width.
@@ -109,7 +113,27 @@ std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
     c.text({px - 0.4 * f, a.lo.y + 1.3 * f}, chart.marker->second, f, ink, Align::right);
   }
   c.pop_clip();
-  if (!legend.empty()) legend.draw(c, {pad, h - legend_h}, columns);
+  if (!legend.empty()) legend.draw(c, {pad, y0 + h - legend_h}, columns);
+}
+}  // namespace
+
+std::string draw_line_chart(const LineChart& chart, const FigureFile& file) {
+  const double w = file.size.width, h = file.size.height > 0 ? file.size.height : 0.62 * w;
+  Canvas c(file, w, h);
+  c.rectangle({0, 0}, {w, h}, Colour::hex(0xffffff));
+  draw_chart(c, chart, file, 0.0, h);
+  return c.finish();
+}
+
+std::string draw_chart_panels(const std::vector<LineChart>& panels, const FigureFile& file) {
+  const double w = file.size.width;
+  const double h =
+      file.size.height > 0 ? file.size.height : 0.62 * w * static_cast<double>(panels.size());
+  const double each = h / static_cast<double>(std::max<std::size_t>(1, panels.size()));
+  Canvas c(file, w, h);
+  c.rectangle({0, 0}, {w, h}, Colour::hex(0xffffff));
+  for (std::size_t k = 0; k < panels.size(); ++k)
+    draw_chart(c, panels[k], file, each * static_cast<double>(k), each);
   return c.finish();
 }
 

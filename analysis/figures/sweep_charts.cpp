@@ -166,17 +166,35 @@ std::vector<SweepChart> sweep_charts(const SweepSpec& spec, const std::vector<Sw
                                 categorical ? "interval" : "band");
       chart.y_label = with_unit(metric, run_field_unit(metric));
       chart.series = std::move(series);
+      std::vector<LineChart> panels;
       if (categorical) {
         chart.x_label = spec.parameters[p];
         for (const auto& v : categories)
           chart.x_categories.push_back(setting_words(spec.parameters[p], v));
+        // Facets: a panel per combination of the other parameters, on one y range.
+        double lo = INFINITY, hi = -INFINITY;
+        for (const ChartSeries& s : chart.series) {
+          for (const ChartPoint& q : s.points)
+            lo = std::min({lo, q.lo, q.y}), hi = std::max({hi, q.hi, q.y});
+          for (const auto& [x, y] : s.samples)
+            lo = std::min(lo, y), hi = std::max(hi, y);
+        }
+        if (chart.series.size() > 1)
+          for (const ChartSeries& s : chart.series) {
+            LineChart panel = chart;
+            panel.y_cover_lo = lo;
+            panel.y_cover_hi = hi;
+            panel.title = fmt::format("{}: {}", metric, s.label);
+            panel.series = {s};
+            panels.push_back(std::move(panel));
+          }
       } else {
         chart.x_label = with_unit(spec.parameters[p], scenario_key_unit(spec.parameters[p]));
         chart.log_x = log_spaced(values);
       }
       charts.push_back(
           {fmt::format("{}_{}_{}", metric, categorical ? "by" : "vs", spec.parameters[p]),
-           std::move(chart)});
+           std::move(chart), std::move(panels)});
     }
   }
   return charts;
@@ -190,7 +208,8 @@ std::vector<fs::path> write_sweep_plots(const fs::path& dir, const SweepSpec& sp
   for (const SweepChart& c : sweep_charts(spec, results, group, measures)) {
     const fs::path file = dir / fmt::format("{}.{}", c.name, extension(format));
     AtomicFile f(file);
-    f.stream() << draw_line_chart(c.chart, FigureFile{format, 0});
+    f.stream() << (c.panels.empty() ? draw_line_chart(c.chart, FigureFile{format, 0})
+                                    : draw_chart_panels(c.panels, FigureFile{format, 0}));
     f.commit();
     written.push_back(file);
   }

@@ -4,9 +4,9 @@
 // "<measure>_vs_<parameter>": the mean with a 95% confidence band and the runs as dots; any
 // other (a planner, a loss model, a loop schedule) gives "<measure>_by_<parameter>", its
 // values as categories named in words (analysis/sweep/setting_words), the runs as dots and
-// the mean with its 95% interval at each. One line (or set of points) per value of `group`
-// (a swept parameter; the others pooled), or without one, per combination of the other
-// varying parameters.
+// the mean with its 95% interval at each, one panel (facet) per combination of the others.
+// One line (or panel) per value of `group` (a swept parameter; the others pooled), or
+// without one, per combination of the other varying parameters.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,6 +21,9 @@ namespace covsim {
 struct SweepChart {
   std::string name;
   LineChart chart;
+  // A categorical chart with other varying parameters: one panel per combination of them
+  // (facets, drawn one above the other), each with that combination's series alone.
+  std::vector<LineChart> panels;
 };
 // Throws std::invalid_argument ("--group: ... is not a swept parameter") unless `group` is
 // empty or a swept parameter of `spec`.

@@ -145,9 +145,28 @@ TEST_CASE("a categorical parameter gets a chart of its categories", "[sweep]") {
     CHECK(s.points[1].x == 1.0);
     CHECK(s.samples.size() == 4);  // 2 planners x 2 seeds
   }
+  // Facets: a panel per schedule, its series alone, on one y range; drawn one above the
+  // other (twice a chart's height).
+  const auto facets = std::find_if(charts.begin(), charts.end(), [](const SweepChart& c) {
+                        return c.name == "sim_time_by_planner.type";
+                      })->panels;
+  REQUIRE(facets.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    REQUIRE(facets[k].series.size() == 1);
+    CHECK(facets[k].series[0].label == planners.series[k].label);
+    CHECK(facets[k].x_categories == planners.x_categories);
+    CHECK(facets[k].y_cover_lo == facets[0].y_cover_lo);
+    CHECK(facets[k].y_cover_hi == facets[0].y_cover_hi);
+  }
+  CHECK(facets[1].title == "sim_time: loops = periodic, loop1_period 0.5 s");
+  const auto height = [](const std::string& svg) {
+    const auto at = svg.find("height=\"") + 8;
+    return std::stod(svg.substr(at, svg.find('"', at) - at));
+  };
+  CHECK(height(draw_chart_panels(facets, FigureFile{FigureFormat::svg, 0})) ==
+        Approx(2 * height(draw_line_chart(planners, FigureFile{FigureFormat::svg, 0}))));
   const LineChart loops = named("sim_time_by_loops");
-  CHECK(loops.x_categories ==
-        std::vector<std::string>{"classic", "periodic, loop1_period 0.5 s"});
+  CHECK(loops.x_categories == std::vector<std::string>{"classic", "periodic, loop1_period 0.5 s"});
   // The one-valued jitter draws nothing; every chart is drawn.
   CHECK(std::none_of(charts.begin(), charts.end(), [](const SweepChart& c) {
     return c.name.find("robots.jitter") != std::string::npos;
@@ -160,10 +179,10 @@ TEST_CASE("a categorical parameter gets a chart of its categories", "[sweep]") {
 TEST_CASE("a log-spaced axis is drawn on a log scale; --measures chooses the charts", "[sweep]") {
   const fs::path dir = temp_dir("log-axis");
   const auto charts_over = [&](const std::string& values, std::vector<std::string> measures) {
-    const SweepSpec spec = load_sweep(write_sweep(
-        dir, R"({"scenario": ")" + std::string(COVSIM_SOURCE_DIR) +
-                 R"(/scenarios/u_shape.json", "grid": {"sensor.range": )" + values +
-                 R"(}, "seeds": [1]})"));
+    const SweepSpec spec =
+        load_sweep(write_sweep(dir, R"({"scenario": ")" + std::string(COVSIM_SOURCE_DIR) +
+                                        R"(/scenarios/u_shape.json", "grid": {"sensor.range": )" +
+                                        values + R"(}, "seeds": [1]})"));
     std::vector<SweepResult> results;
     for (std::size_t i = 0; i < spec.runs().size(); ++i) {
       SweepResult r;
