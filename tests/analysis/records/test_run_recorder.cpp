@@ -8,8 +8,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <limits>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -180,8 +180,8 @@ TEST_CASE("a compressed recording is the uncompressed one's bytes, gzipped", "[r
   // Nothing else differs, and nothing is left over.
   CHECK(read_bytes(dirs[0] / "metrics.csv") == read_bytes(dirs[1] / "metrics.csv"));
   // The columns' units beside each table (CSVW), in the header's order.
-  for (const fs::path& table : {dirs[0] / "trajectory.csv", dirs[1] / "trajectory.csv.gz",
-                                dirs[0] / "metrics.csv"}) {
+  for (const fs::path& table :
+       {dirs[0] / "trajectory.csv", dirs[1] / "trajectory.csv.gz", dirs[0] / "metrics.csv"}) {
     INFO(table);
     const auto meta = nlohmann::json::parse(read_bytes(table.string() + "-metadata.json"));
     CHECK(meta["url"] == table.filename().string());
