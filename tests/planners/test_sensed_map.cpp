@@ -318,6 +318,36 @@ TEST_CASE("sensed map: under range noise a touch is exact, and a noisy wall trap
   CHECK_FALSE(exact.clear({1.49, 0.8}, {1.0, 0.8}));
 }
 
+namespace {
+// A sensed-map planner of `type` (σ = 1 cm, 5 cm cells) walking from (0.5, 1) to `goal` in
+// `env`, every reading showing the wall on x = 1.5 at x = `seen_at` instead: where it ends,
+// how, and the length of its way.
+struct Walk {
+  Vec2 end;
+  PlanStatus status = PlanStatus::moving;
+  double path = 0.0;
+};
+Walk walk_past_a_shifted_wall(const char* type, const Environment& env, Vec2 goal, double seen_at) {
+  PlannerConfig c;
+  c.type = type;
+  c.params = sensed(0.05);
+  auto planner = planner_source(c, PlannerContext{env, SensorSpec{0.01}})();
+  planner->set_goal(goal);
+  Walk w{{0.5, 1.0}};
+  for (int k = 0; k < 4000 && w.status == PlanStatus::moving; ++k) {
+    SensorReading r = sense(env, w.end, 0.5);
+    for (SensedPiece& p : r.visible().pieces)
+      if (p.a.x == 1.5 && p.b.x == 1.5) p.a.x = p.b.x = seen_at;
+    const PlanStep s = planner->step(r, 0.02);
+    const Vec2 next = env.advance(w.end, s.next);
+    w.path += distance(w.end, next);
+    w.end = next;
+    w.status = s.status;
+  }
+  return w;
+}
+}  // namespace
+
 TEST_CASE("sensed map planners under range noise settle by touch on ∂Ω", "[sensed_map]") {
   // σ = 1 cm, and every reading shows the box's west face 2 cm too near (x = 1.48, within
   // the noise). A goal inside the box ends on the true face, not on the wall seen in front of
@@ -326,28 +356,14 @@ TEST_CASE("sensed map planners under range noise settle by touch on ∂Ω", "[se
   for (const char* type : {"grid_astar", "visibility_graph"}) {
     for (const Vec2 goal : {Vec2{1.8, 1.0}, Vec2{1.49, 1.0}}) {
       INFO(type << ", goal (" << goal.x << ", " << goal.y << ")");
-      PlannerConfig c;
-      c.type = type;
-      c.params = sensed(0.05);
-      auto planner = planner_source(c, PlannerContext{env, SensorSpec{0.01}})();
-      planner->set_goal(goal);
-      Vec2 x{0.5, 1.0};
-      PlanStatus status = PlanStatus::moving;
-      for (int k = 0; k < 2000 && status == PlanStatus::moving; ++k) {
-        SensorReading r = sense(env, x, 0.5);
-        for (SensedPiece& p : r.visible().pieces)
-          if (p.a.x == 1.5 && p.b.x == 1.5) p.a.x = p.b.x = 1.48;
-        const PlanStep s = planner->step(r, 0.02);
-        x = env.advance(x, s.next);
-        status = s.status;
-      }
+      const Walk w = walk_past_a_shifted_wall(type, env, goal, 1.48);
       if (goal.x > 1.5) {
-        CHECK(status == PlanStatus::projected);
-        CHECK(x.x == Approx(1.5).margin(1e-9));
-        CHECK(x.y == Approx(1.0).margin(1e-6));
+        CHECK(w.status == PlanStatus::projected);
+        CHECK(w.end.x == Approx(1.5).margin(1e-9));
+        CHECK(w.end.y == Approx(1.0).margin(1e-6));
       } else {
-        CHECK(status == PlanStatus::reached);
-        CHECK(distance(x, goal) <= 1e-9);
+        CHECK(w.status == PlanStatus::reached);
+        CHECK(distance(w.end, goal) <= 1e-9);
       }
     }
   }
@@ -364,26 +380,9 @@ TEST_CASE("sensed map planners under range noise reach a goal on a thin wall's f
   const Vec2 goal{1.53, 1.0};
   for (const char* type : {"grid_astar", "visibility_graph"}) {
     INFO(type);
-    PlannerConfig c;
-    c.type = type;
-    c.params = sensed(0.05);
-    auto planner = planner_source(c, PlannerContext{env, SensorSpec{0.01}})();
-    planner->set_goal(goal);
-    Vec2 x{0.5, 1.0};
-    PlanStatus status = PlanStatus::moving;
-    double path = 0.0;
-    for (int k = 0; k < 4000 && status == PlanStatus::moving; ++k) {
-      SensorReading r = sense(env, x, 0.5);
-      for (SensedPiece& p : r.visible().pieces)
-        if (p.a.x == 1.5 && p.b.x == 1.5) p.a.x = p.b.x = 1.52;
-      const PlanStep s = planner->step(r, 0.02);
-      const Vec2 next = env.advance(x, s.next);
-      path += distance(x, next);
-      x = next;
-      status = s.status;
-    }
-    CHECK(status == PlanStatus::reached);
-    CHECK(distance(x, goal) <= 1e-9);
-    CHECK(path > 2.0);  // round the wall, not through it
+    const Walk w = walk_past_a_shifted_wall(type, env, goal, 1.52);
+    CHECK(w.status == PlanStatus::reached);
+    CHECK(distance(w.end, goal) <= 1e-9);
+    CHECK(w.path > 2.0);  // round the wall, not through it
   }
 }

@@ -28,6 +28,15 @@ const std::string kSweep =
   "grid": {"network.loss.model": ["bernoulli"], "network.loss.p": [0.0, 0.4]},
   "seeds": [3, 4, 5]})";
 
+// A CSV line's cells (none of summary.csv's cells here is quoted).
+std::vector<std::string> cells(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  for (std::string cell; std::getline(ss, cell, ',');)
+    out.push_back(cell);
+  return out;
+}
+
 // Everything but the wall time.
 std::vector<std::string> comparable(const std::vector<SweepResult>& rs) {
   std::vector<std::string> out;
@@ -489,13 +498,6 @@ TEST_CASE("a measure no run took is left empty in summary.csv, never nan", "[swe
   std::getline(in, on);
   CHECK_THAT(off + on, !Catch::Contains("nan"));
   // The column's mean, sd and interval: empty without λ2, numbers with it.
-  const auto cells = [](const std::string& line) {
-    std::vector<std::string> out;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');)
-      out.push_back(cell);
-    return out;
-  };
   const std::vector<std::string> names = cells(header), a = cells(off), b = cells(on);
   const auto at = std::find(names.begin(), names.end(), "algebraic_connectivity_min_mean");
   REQUIRE(at != names.end());
@@ -531,13 +533,6 @@ TEST_CASE("seeds that give one run are counted once, and said", "[sweep]") {
   std::getline(in, header);
   std::getline(in, first);
   std::getline(in, second);
-  const auto cells = [](const std::string& line) {
-    std::vector<std::string> out;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');)
-      out.push_back(cell);
-    return out;
-  };
   const std::vector<std::string> names = cells(header), a = cells(first), b = cells(second);
   const auto column = [&](const std::vector<std::string>& row, const std::string& name) {
     const auto at = std::find(names.begin(), names.end(), name);
