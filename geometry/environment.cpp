@@ -194,8 +194,12 @@ std::optional<std::uint32_t> Environment::nearest_edge(Vec2 p,
 Vec2 Environment::advance(Vec2 from, Vec2 to) const {
   if (segment_inside(from, to)) return to;
   const double d = distance(from, to);
-  const auto hit = ray_cast(from, to - from, d);
-  return hit ? hit->point : from;
+  if (const auto hit = ray_cast(from, to - from, d)) return hit->point;
+  // No exit before `to`: the segment leaves Ω within rounding of its end (`to` a hair past a
+  // wall it meets end-on), so the motion ends on the wall there, not where it started (a
+  // robot held at `from` would propose the same step forever).
+  const Vec2 end = closest_point(to);
+  return segment_inside(from, end) ? end : from;
 }
 
 std::vector<std::uint32_t> Environment::edges_at(Vec2 p) const {

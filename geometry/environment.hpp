@@ -73,7 +73,8 @@ class Environment {
   // The distance from p to the nearest point of ∂Ω, inside Ω or out.
   double boundary_distance(Vec2 p) const;
   // How far a straight motion from `from` (in Ω) toward `to` gets before it would leave Ω:
-  // `to` if the segment lies in Ω, else the point where it first leaves.
+  // `to` if the segment lies in Ω, else the point where it first leaves (the point of Ω
+  // closest to `to` when it leaves only within rounding of `to`).
   Vec2 advance(Vec2 from, Vec2 to) const;
   // Boundary edges within tolerance() of p (two at a vertex of ∂Ω, one on an edge).
   std::vector<std::uint32_t> edges_at(Vec2 p) const;

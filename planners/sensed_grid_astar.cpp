@@ -7,7 +7,7 @@ namespace covsim {
 
 std::optional<std::vector<Vec2>> SensedGridAStar::plan(Vec2 start, std::uint32_t from, Vec2 goal,
                                                        std::uint32_t to) {
-  const SensedMap& m = map();
+  const SensedMap& m = planning_map();
   const GridSearch found = grid_search(
       m.shape(), [&m](std::int32_t i, std::int32_t j) { return m.free(i, j); }, from, to);
   if (found.cells.empty()) return std::nullopt;

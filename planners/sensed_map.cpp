@@ -14,7 +14,11 @@ constexpr double kMaxCells = double(1 << 24);
 }  // namespace
 
 SensedMap::SensedMap(const Box& bounds, double resolution, double tolerance, double spread)
-    : h_(resolution), tol_(tolerance), spread_(spread), merge_(std::max(tolerance, 3.0 * spread)) {
+    : bounds_(bounds),
+      h_(resolution),
+      tol_(tolerance),
+      spread_(spread),
+      merge_(std::max(tolerance, 3.0 * spread)) {
   if (!(resolution > 0.0)) throw std::invalid_argument("a sensed map's cells need a side > 0");
   const Vec2 size = bounds.size();
   const double nx = std::ceil(size.x / h_) + 2 * kMargin, ny = std::ceil(size.y / h_) + 2 * kMargin;
@@ -25,6 +29,17 @@ SensedMap::SensedMap(const Box& bounds, double resolution, double tolerance, dou
   origin_ = bounds.lo - Vec2{kMargin * h_, kMargin * h_};
   wall_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0);
   in_cell_.resize(wall_.size());
+}
+
+std::unique_ptr<SensedMap> SensedMap::finer(std::int32_t factor, double max_cells) const {
+  const double h = h_ / factor;
+  const Vec2 size = bounds_.size();
+  if ((std::ceil(size.x / h) + 2 * kMargin) * (std::ceil(size.y / h) + 2 * kMargin) > max_cells)
+    return nullptr;
+  auto out = std::make_unique<SensedMap>(bounds_, h, tol_, spread_);
+  for (const Piece& p : pieces_)
+    out->add_stretches(p.a, p.b, out->merge_, p.exact);
+  return out;
 }
 
 Vec2 SensedMap::center(std::uint32_t c) const {

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -40,6 +41,9 @@ class SensedMap {
   bool add_wall(Vec2 a, Vec2 b);
 
   double resolution() const { return h_; }
+  // The same walls on cells `factor` times finer; nullptr past `max_cells` cells. On an exact
+  // map a finer grid closes fewer of the ways the pieces leave open.
+  std::unique_ptr<SensedMap> finer(std::int32_t factor, double max_cells) const;
   // How far a sensed wall point may wander between readings (0 for exact readings).
   double spread() const { return spread_; }
   // Within this of a wall held, a wall seen is the same wall (and a point lies on it).
@@ -129,6 +133,7 @@ class SensedMap {
   // The squared distance from p to cell (i, j)'s closed square.
   double cell_distance2(std::int32_t i, std::int32_t j, Vec2 p) const;
 
+  Box bounds_;
   double h_, tol_, spread_, merge_;
   Vec2 origin_;
   std::int32_t nx_ = 0, ny_ = 0;

@@ -23,18 +23,62 @@ void SensedMapPlanner::set_goal(Vec2 goal) {
   follower_.clear();
 }
 
-std::optional<std::vector<Vec2>> SensedMapPlanner::route(Vec2 start, Vec2 goal) {
-  if (map_->clear(start, goal)) return std::vector<Vec2>{start, goal};
-  const auto from = map_->entry(start);
+std::optional<std::vector<Vec2>> SensedMapPlanner::route(const SensedMap& m, Vec2 start,
+                                                         Vec2 goal) {
+  planning_ = &m;
+  if (m.clear(start, goal)) return std::vector<Vec2>{start, goal};
+  const auto from = m.entry(start);
   if (!from) return std::nullopt;
-  if (const auto to = map_->entry(goal))
+  if (const auto to = m.entry(goal))
     if (auto path = plan(start, *from, goal, *to)) return path;
   // Else the goal enters by a cell the start's reaches: the nearest free cell may lie beyond a
   // wall from it (the other side of a thin wall the goal lies on).
-  const auto reach = map_->reach(*from);
-  const auto to = map_->entry(goal, 4, &reach);
+  const auto reach = m.reach(*from);
+  const auto to = m.entry(goal, 4, &reach);
   if (!to) return std::nullopt;
   return plan(start, *from, goal, *to);
+}
+
+const SensedMap* SensedMapPlanner::finer_map() {
+  if (!finer_ && !finer_tried_) {
+    finer_tried_ = true;
+    finer_ = map_->finer(kFiner, kMaxFinerCells);
+    finer_synced_ = map_->added().size();
+  }
+  if (!finer_) return nullptr;
+  const auto& added = map_->added();
+  for (; finer_synced_ < added.size(); ++finer_synced_)
+    finer_->add_wall(added[finer_synced_].a, added[finer_synced_].b);
+  return finer_.get();
+}
+
+bool SensedMapPlanner::wall_nearer_than(const std::optional<SensedMap::Landing>& landing) const {
+  const double at = landing ? distance(goal_, landing->point) : INFINITY;
+  for (const SensedMap::Piece& p : map_->pieces())
+    if (distance(goal_, project_to_segment(goal_, p.a, p.b).point) < at - tol_) return true;
+  return false;
+}
+
+bool SensedMapPlanner::cut_off(Vec2 x, Vec2 y) const {
+  const auto from = map_->entry(x);
+  if (!from) return false;
+  const auto reach = map_->reach(*from);
+  return !map_->entry(y, 4, &reach);
+}
+
+bool SensedMapPlanner::plan_on(const SensedMap& m, Vec2 x,
+                               std::optional<SensedMap::Landing>& landing) {
+  landing.reset();
+  if (!projecting_) {
+    if (auto path = route(m, x, goal_)) {
+      follower_.assign(std::move(*path));
+      arrival_ = PlanStatus::reached;
+      return true;
+    }
+  }
+  planning_ = &m;
+  if (const auto from = m.entry(x)) landing = m.closest_reachable_wall(goal_, m.reach(*from));
+  return false;
 }
 
 bool SensedMapPlanner::escape(Vec2 x) {
@@ -71,25 +115,29 @@ void SensedMapPlanner::replan(Vec2 x) {
   // faces round a corner it stopped near): that says nothing of the goal. It first moves to
   // the nearest free cell.
   if (map_->spread() > 0.0 && !map_->entry(x) && escape(x)) return;
-  if (!projecting_) {
-    if (auto path = route(x, goal_)) {
-      follower_.assign(std::move(*path));
-      arrival_ = PlanStatus::reached;
-      return;
+  std::optional<SensedMap::Landing> landing;
+  if (plan_on(*map_, x, landing)) return;
+  // (A noisy map's pieces lie off the walls: the robot settles by touch there instead.)
+  if (map_->spread() == 0.0 && (wall_nearer_than(landing) || cut_off(x, set_from_)))
+    if (const SensedMap* finer = finer_map()) {
+      std::optional<SensedMap::Landing> there;
+      if (plan_on(*finer, x, there)) return;
+      if (there && (!landing || distance(goal_, there->point) < distance(goal_, landing->point)))
+        landing = there;
+      else
+        planning_ = map_.get();
     }
-    projecting_ = true;
-  }
+  projecting_ = true;
   arrival_ = PlanStatus::projected;
   follower_.clear();
   status_ = PlanStatus::stalled;
-  const auto from = map_->entry(x);
-  if (!from) return;
-  const auto reach = map_->reach(*from);
-  const auto landing = map_->closest_reachable_wall(goal_, reach);
   if (!landing) return;
+  const SensedMap& m = *planning_;
+  const auto from = m.entry(x);
+  if (!from) return;
   landing_distance_ = distance(goal_, landing->point);
   landing_pieces_ = map_->added().size();
-  auto path = map_->clear(x, landing->point)
+  auto path = m.clear(x, landing->point)
                   ? std::optional<std::vector<Vec2>>(std::vector<Vec2>{x, landing->point})
                   : plan(x, *from, landing->point, landing->cell);
   if (!path) return;
@@ -131,7 +179,7 @@ bool SensedMapPlanner::ahead_clear(Vec2 x, std::size_t first_new) const {
     bool touched = false;
     for (std::size_t n = first_new; n < pieces.size() && !touched; ++n)
       touched = segment_distance(from, p[k], pieces[n].a, pieces[n].b) <= near;
-    if (touched && !map_->clear(from, p[k])) return false;
+    if (touched && !planning_->clear(from, p[k])) return false;
     from = p[k];
   }
   return true;
@@ -144,7 +192,9 @@ void SensedMapPlanner::learn(const std::vector<SensedPiece>& walls) {
 
 PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
+  if (!planned_) set_from_ = x;
   map_->add(r);
+  if (finer_) finer_map();
   // New walls, from this reading or (a shared map) another robot's since it last looked.
   const std::size_t first_new = seen_pieces_;
   const bool changed = map_->added().size() != first_new;

@@ -40,6 +40,8 @@ class SensedMapPlanner : public Planner {
   void set_goal(Vec2 goal) override;
   PlanStep step(const SensorReading& reading, double max_step) override;
   const SensedMap& map() const { return *map_; }
+  // The map the path was planned on: the robot's, or its finer grid (below).
+  const SensedMap& planning_map() const { return *planning_; }
   // The path being followed (from where the robot stood when it was planned), and the goal
   // it ends at (the projection once the goal was found unreachable).
   const std::vector<Vec2>& path() const { return follower_.path(); }
@@ -51,15 +53,26 @@ class SensedMapPlanner : public Planner {
  protected:
   // `env` is the robot's free space: the planner takes its tolerance from it, no more.
   SensedMapPlanner(const Environment& env, std::shared_ptr<SensedMap> map)
-      : tol_(env.tolerance()), map_(std::move(map)) {}
+      : tol_(env.tolerance()), map_(std::move(map)), planning_(map_.get()) {}
   // A path from start to goal on the map, start first, goal last, with the free cells each
   // enters the grid by (SensedMap::entry); nullopt if there is none.
   virtual std::optional<std::vector<Vec2>> plan(Vec2 start, std::uint32_t from, Vec2 goal,
                                                 std::uint32_t to) = 0;
 
  private:
-  std::optional<std::vector<Vec2>> route(Vec2 start, Vec2 goal);
+  std::optional<std::vector<Vec2>> route(const SensedMap& m, Vec2 start, Vec2 goal);
   void replan(Vec2 x);
+  // On `m`: whether a path to the goal was found (and is followed), else the projection
+  // there, if any.
+  bool plan_on(const SensedMap& m, Vec2 x, std::optional<SensedMap::Landing>& landing);
+  // Whether the landing leaves a wall nearer the goal than itself: on an exact map the walls
+  // that cut a goal off were seen from the robot's side, so the cells closed a way.
+  bool wall_nearer_than(const std::optional<SensedMap::Landing>& landing) const;
+  // Whether the map's cells part x from y, a point the robot stood at: they closed a way it
+  // took.
+  bool cut_off(Vec2 x, Vec2 y) const;
+  // The finer grid, brought up to date with the robot's map; nullptr past its size.
+  const SensedMap* finer_map();
   // Whether the rest of the path, from x, is still clear on the map, which gained the pieces
   // stretches from `first_new` on (SensedMap::added) since it was last looked at.
   bool ahead_clear(Vec2 x, std::size_t first_new) const;
@@ -75,6 +88,18 @@ class SensedMapPlanner : public Planner {
 
   double tol_;
   std::shared_ptr<SensedMap> map_;
+  // An exact map's cells may close a way the pieces leave open (a slot of a few cells whose
+  // walls were learnt by touch): where the robot's grid finds no way to the goal and a wall
+  // lies nearer it than the landing, or they part the robot from where it set out, the planner
+  // tries the same pieces on cells kFiner times
+  // finer (built when first needed, then kept up to date) before it settles for the landing.
+  static constexpr std::int32_t kFiner = 2;
+  static constexpr double kMaxFinerCells = double(1 << 22);
+  std::unique_ptr<SensedMap> finer_;
+  bool finer_tried_ = false;
+  std::size_t finer_synced_ = 0;  // the map's added stretches the finer grid holds
+  const SensedMap* planning_ = nullptr;
+  Vec2 set_from_;                       // where the robot stood when it first planned for this goal
   std::size_t seen_pieces_ = 0;         // the map's added stretches when it last looked
   std::size_t seen_supersessions_ = 0;  // and its supersessions
   // Plans for the goal again after a touch superseded noisy pieces, while projecting.

@@ -8,8 +8,8 @@ namespace covsim {
 
 std::optional<std::vector<Vec2>> SensedVisibilityGraph::plan(Vec2 start, std::uint32_t from,
                                                              Vec2 goal, std::uint32_t to) {
-  const SensedMap& m = map();
-  if (corners_version_ != m.version()) {
+  const SensedMap& m = planning_map();
+  if (corners_map_ != &m || corners_version_ != m.version()) {
     corners_.clear();
     for (std::int32_t j = 0; j < m.ny(); ++j) {
       for (std::int32_t i = 0; i < m.nx(); ++i) {
@@ -21,6 +21,7 @@ std::optional<std::vector<Vec2>> SensedVisibilityGraph::plan(Vec2 start, std::ui
         if (corner) corners_.push_back(m.index(i, j));
       }
     }
+    corners_map_ = &m;
     corners_version_ = m.version();
   }
   // Nodes: the start, the goal, the cells they enter by, the corners.

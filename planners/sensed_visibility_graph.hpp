@@ -23,8 +23,9 @@ class SensedVisibilityGraph final : public SensedMapPlanner {
  private:
   std::optional<std::vector<Vec2>> plan(Vec2 start, std::uint32_t from, Vec2 goal,
                                         std::uint32_t to) override;
-  // The corner cells, for the map as it was at its version `corners_version_`.
+  // The corner cells, for the map `corners_map_` as it was at its version `corners_version_`.
   std::vector<std::uint32_t> corners_;
+  const SensedMap* corners_map_ = nullptr;
   std::uint64_t corners_version_ = UINT64_MAX;
 };
 

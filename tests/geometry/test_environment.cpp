@@ -192,6 +192,34 @@ TEST_CASE("a segment that slips past a vertex into an obstacle is not in Ω", "[
   CHECK(env.segment_inside({0.05 + eps, 0.2}, goal));
 }
 
+TEST_CASE("a step that leaves Ω only within rounding of its end stops on the wall",
+          "[environment]") {
+  // Traced on a planner contract case (visibility_graph, R = 0, seed 1 case 7602): a step to a
+  // corner cell's centre ends 1.6e-8 m past an L-wall's end face, met end-on; no exit lies
+  // before the end, and the motion held the robot where it stood, step after step.
+  Environment env({{0.0, 0.0},
+                   {2.9555831454643497, 0.0},
+                   {2.9555831454643497, 1.748357815224012},
+                   {3.626423572219443, 1.748357815224012},
+                   {3.626423572219443, 0.0},
+                   {9.473233143667043, 0.0},
+                   {9.473233143667043, 9.693999415218283},
+                   {0.0, 9.693999415218283}},
+                  {{{4.676287890668407, 8.652999387186455},
+                    {4.5699432822669515, 8.503164747380323},
+                    {3.7266055166959267, 9.101720759166719},
+                    {2.5737643023024805, 7.4774207527176735},
+                    {2.4239296624963496, 7.583765361119129},
+                    {3.6831154852912507, 9.357900007374305}}});
+  const Vec2 from{2.4950741097731317, 7.5154160160814545};
+  const Vec2 to{2.5425082746756571, 7.4996046277806121};
+  REQUIRE(env.contains(from));
+  const Vec2 stop = env.advance(from, to);
+  CHECK(distance(stop, to) < 1e-6);  // it moved the whole step, to the wall
+  CHECK(env.contains(stop));
+  CHECK(env.segment_inside(from, stop));
+}
+
 TEST_CASE("the free-space mask answers as the search would", "[environment]") {
   // Many small obstacles: most points and short segments lie in free mask cells, the rest
   // near walls; the answers with the mask's shortcut equal the search's and brute force's.
