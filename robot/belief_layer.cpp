@@ -1,0 +1,136 @@
+#include "robot/belief_layer.hpp"
+
+#include <algorithm>
+
+#include "robot/localization_registry.hpp"
+#include "robot/mapping.hpp"
+
+namespace covsim {
+
+BeliefLayer::BeliefLayer(Kernel& kernel, const Environment& env, const Density& density,
+                         const std::vector<Vec2>& starts, const CoverageConfig& config, double step,
+                         double tolerance, std::function<Vec2(std::uint32_t)> position,
+                         std::function<const Environment&(std::uint32_t)> free_space)
+    : free_space_(std::move(free_space)), step_(step), tolerance_(tolerance) {
+  localization_ = make_localization(config.localization,
+                                    LocalizationContext{kernel, starts, std::move(position)});
+  sensing_ = SensorSpec{config.sensor.noise_sigma,
+                        localization_ ? localization_->odometry_jitter(step_) : 0.0};
+  if (config.mapping.unknown()) {
+    mapping_ =
+        std::make_unique<Mapping>(env, density, config.radius, config.sensor.range, config.mapping,
+                                  starts.size(), config.network.channel.is_ideal());
+    mapping_->set_clock([&kernel] { return kernel.now(); });
+  }
+}
+
+BeliefLayer::~BeliefLayer() = default;
+
+void BeliefLayer::start(SimTime t0, const std::vector<Robot>& robots) {
+  if (localization_) localization_->start(t0);
+  if (mapping_) {
+    for (const Robot& r : robots)
+      mapping_->start(r.id, r.position, t0);
+  }
+}
+
+const Environment& BeliefLayer::believed_free_space(const Robot& r) const {
+  return mapping_ ? mapping_->free_space(r.id, r.position) : free_space_(r.id);
+}
+
+void BeliefLayer::tick(const Robot& r) {
+  if (!localization_) return;
+  const double error = distance(localization_->estimate(r.id), r.position);
+  localization_error_sum_ += error;
+  localization_error_max_ = std::max(localization_error_max_, error);
+  ++localization_steps_;
+}
+
+void BeliefLayer::moving(const Robot& r, Vec2 p, double length, SimTime now) {
+  if (mapping_) mapping_->moved(r.id, p, length, now);
+}
+
+void BeliefLayer::moved(const Robot& r, Vec2 d) {
+  if (localization_) localization_->moved(r.id, d);
+}
+
+void BeliefLayer::arrived(const Robot& r, PlanStatus status, SimTime now) {
+  if (!mapping_ || !is_settled(status)) return;
+  // Found unreachable a goal its map still places in free space: an obstacle not yet known
+  // whole (the paper's Fig. 4 without a map).
+  if (status == PlanStatus::projected && mapping_->free_space(r.id, r.position).contains(r.goal))
+    ++discoveries_;
+  mapping_->settled(r.id, r.position, now);
+}
+
+void BeliefLayer::believe(Knowledge& k, const CellIntegrator& integrator) {
+  k.integrator = &integrator;
+  if (k.shared == nullptr || !k.version) return;
+  // Every generator known as it is now: one partition in that belief per change of the
+  // generators or of the belief, shared by the robots that hold it (one shared map: all).
+  BelievedPartition& b = believed_[k.kind == Generators::positions ? 1 : 0];
+  if (!b.partition || b.integrator != &integrator || b.version != *k.version) {
+    const auto split = VoronoiPartition::Coincident::split;
+    // The next partition keeps the cells of the last that did not change: built beside it,
+    // then put in its place.
+    if (b.partition && b.integrator == &integrator) {
+      VoronoiPartition next(integrator, k.points, split, std::move(*b.partition));
+      b.partition.reset();
+      b.partition.emplace(std::move(next));
+    } else {
+      b.partition.emplace(integrator, k.points, split);
+    }
+    b.integrator = &integrator;
+    b.version = *k.version;
+  }
+  k.believed = &*b.partition;
+}
+
+Vec2 BeliefLayer::planner_position(const Robot& r) const {
+  return localization_ ? localization_->odometry(r.id) : r.position;
+}
+
+Vec2 BeliefLayer::in_planner_frame(const Robot& r, Vec2 p) {
+  if (!localization_) return p;
+  const Vec2 q = p - (localization_->estimate(r.id) - localization_->odometry(r.id));
+  // A fix's noise must not make a goal the robot can reach one it cannot: moved by the fix's
+  // error, a goal near a wall lands in it, and the planner walks round all of Ω to find it
+  // unreachable (e-puck with 2 cm of tracking noise: a goal 2.8 cm from the grown wall, moved
+  // 3.6 cm by a fix, sent its robot round the U). A goal in an obstacle on purpose (discover)
+  // stays there.
+  const Environment& space = free_space_(r.id);
+  return space.contains(p) && !space.contains(q) ? space.closest_point(q) : q;
+}
+
+double BeliefLayer::reach(double sigma) const {
+  return std::max(tolerance_, kReachDeviations * sigma);
+}
+
+double BeliefLayer::planner_reach() const {
+  return reach(sensing_.position_sigma);
+}
+
+double BeliefLayer::within_reach() const {
+  return localization_ ? reach(localization_->estimate_jitter(step_)) : tolerance_;
+}
+
+Vec2 BeliefLayer::known_position(const Robot& r) {
+  if (!localization_) return r.position;
+  const Vec2 e = localization_->estimate(r.id);
+  const Environment& space = free_space_(r.id);
+  return space.contains(e) ? e : space.closest_point(e);
+}
+
+bool BeliefLayer::goal_unreachable(const Robot& r) const {
+  const Environment& space = free_space_(r.id);
+  if (!localization_) return !space.contains(r.goal);
+  // The planner's goal among the walls as it senses them; one nearer the boundary than the
+  // robot can tell, or than its odometry has drifted while it walked, may have crossed it as
+  // fixes and drift moved it.
+  const Vec2 p = r.planner_goal - (localization_->odometry(r.id) - r.position);
+  const double margin =
+      std::max(within_reach(), reach(localization_->odometry_jitter(r.path_length)));
+  return !space.contains(p) || space.boundary_distance(p) <= margin;
+}
+
+}  // namespace covsim
