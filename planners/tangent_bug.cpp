@@ -383,6 +383,7 @@ TangentBug::Decision TangentBug::begin_following(const SensorReading& r, Vec2 bl
   trace_.assign(1, boundary);
   trail_.assign(1, x);
   traced_ = 0.0;
+  trace_path_ = path_;
   return std::nullopt;
 }
 
@@ -410,9 +411,16 @@ std::optional<SensedChain> TangentBug::followed_chain(const SensorReading& r) co
   return c;
 }
 
+double TangentBug::record_drift() const {
+  if (!(p_.drift > 0.0) || !(step_ > 0.0)) return 0.0;
+  return kDriftDeviations * p_.drift * std::sqrt(std::max(0.0, path_ - trace_path_) / step_);
+}
+
 bool TangentBug::record(const SensedChain& c) {
   const PolylinePlace at = closest_place(c.points, trace_.back());
-  const double eps = loop_tolerance();
+  // Back where it began within what the frame may have drifted meanwhile (an odometry's):
+  // else a robot goes round and round an obstacle it has gone round.
+  const double eps = loop_tolerance() + record_drift();
   const Vec2 began = trace_.front();
   std::vector<Vec2> ahead{at.point};
   ahead.insert(ahead.end(), c.points.begin() + static_cast<std::ptrdiff_t>(at.segment + 1),
@@ -565,7 +573,9 @@ TangentBug::Decision TangentBug::follow_by_touch(const SensorReading& r, double 
   d_followed_ = std::min(d_followed_, distance(x, goal_));
   // The robot walks on the boundary and stops at every vertex: its positions are the record.
   if (beyond(x, trace_.back(), p_.tolerance)) trace_.push_back(x);
-  if (walked_ > p_.tolerance && distance(x, start_) <= p_.tolerance)
+  const double drifted = record_drift();
+  if (walked_ > std::max(p_.tolerance, 4.0 * drifted) &&
+      distance(x, start_) <= p_.tolerance + drifted)
     return loop_closed(r, RecordedObstacle(trace_, dir_, p_.tolerance));
   return walk(r, max_step, start_);
 }
@@ -573,8 +583,10 @@ TangentBug::Decision TangentBug::follow_by_touch(const SensorReading& r, double 
 TangentBug::Decision TangentBug::leave(const SensorReading& r, double max_step) {
   const Vec2 x = r.position;
   const double d = distance(x, leave_to_);
-  // Arrived, or a wall the robot touches stands in the way (possible only with noise).
-  if (d <= p_.tolerance || free_ray(r, (leave_to_ - x) / d, p_.tolerance).distance == 0.0) {
+  // Arrived (under drift, within the jitter of a step: the point was set in the frame of a
+  // step before), or a wall the robot touches stands in the way (possible only with noise).
+  if (d <= p_.tolerance + kDriftDeviations * p_.drift ||
+      free_ray(r, (leave_to_ - x) / d, p_.tolerance).distance == 0.0) {
     if (d > p_.tolerance && leave_to_ == goal_ && p_.noise_margin > 0.0) {
       // The goal looked free and lies just beyond a wall: no leave after all. The episode
       // and its record go on, the goal in sight now only with the way free past it by the
@@ -612,7 +624,34 @@ TangentBug::Decision TangentBug::walk_to(const SensorReading& r, std::size_t kno
   return std::nullopt;
 }
 
+void TangentBug::reanchor(const SensorReading& r) {
+  const double reach = record_drift() + loop_tolerance();
+  const Vec2 c = target_.point;
+  std::optional<Vec2> best;
+  double least = kInf;
+  for (const SensedPiece& p : r.visible().pieces) {
+    // The stretch of the piece within `reach` of c: t in [t0, t1] where |a + t d - c| <= reach.
+    const Vec2 d = p.b - p.a;
+    const double dd = norm2(d);
+    if (!(dd > 0.0)) continue;
+    const double mid = dot(c - p.a, d) / dd;
+    const double off2 = norm2(p.a + mid * d - c);
+    if (off2 > reach * reach) continue;
+    const double half = std::sqrt((reach * reach - off2) / dd);
+    const double lo = std::max(0.0, mid - half), hi = std::min(1.0, mid + half);
+    if (lo > hi) continue;
+    const double t = std::clamp(dot(goal_ - p.a, d) / dd, lo, hi);
+    const Vec2 q = p.a + t * d;
+    if (distance(q, goal_) < least) {
+      least = distance(q, goal_);
+      best = q;
+    }
+  }
+  if (best) target_.point = *best;
+}
+
 TangentBug::Decision TangentBug::walk_on(const SensorReading& r, double max_step) {
+  if (p_.drift > 0.0) reanchor(r);
   const Vec2 x = r.position, target = target_.point;
   // With noise the recorded point may lie off the wall, by more than the noise where it is
   // the nearest of many noisy points: near it, or touching where the straight way to it
@@ -750,6 +789,7 @@ PlannerEntry tangent_bug_entry() {
     // A decrease smaller than the sensor's noise is no progress: three standard deviations.
     p.progress = std::max(p.progress, 3.0 * ctx.sensor.spread());
     p.noise_margin = 3.0 * ctx.sensor.spread();
+    p.drift = ctx.sensor.position_sigma;
     return [p] { return std::make_unique<TangentBug>(p); };
   };
   e.contract.complete = true;

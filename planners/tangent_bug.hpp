@@ -75,6 +75,10 @@ struct TangentBugParams {
   // Added to every sensed distance of the followed obstacle: range noise makes the nearest
   // of many noisy points look closer than the obstacle is.
   double noise_margin = 0.0;
+  // The standard deviation (each axis) of how much the position the robot plans from (an
+  // odometry) drifts over one step: a point recorded in that frame drifts from where the
+  // walls are seen now as the square root of the way walked since.
+  double drift = 0.0;
   // Defaults scaled to an environment: tolerance and progress 1e-9 of its diameter, a
   // path budget of ten times its total boundary length plus its diameter.
   static TangentBugParams for_environment(double diameter, double boundary_length);
@@ -118,6 +122,10 @@ class TangentBug final : public Planner {
   // Toward known_[known]'s point closest to the goal, the shorter way round.
   Decision walk_to(const SensorReading& r, std::size_t known, Mode mode);
   Decision walk_on(const SensorReading& r, double max_step);
+  // Under drift: the target moved onto the boundary in view, to its point nearest the goal
+  // within what the frame may have drifted of the recorded one (the record lies off the walls
+  // seen now by as much).
+  void reanchor(const SensorReading& r);
   Decision settle(const SensorReading& r, double max_step);
   Decision forget_record();
   // The visible stretch of the followed boundary (the one through head_), its points in the
@@ -158,6 +166,10 @@ class TangentBug final : public Planner {
   void resume_motion_to_goal();
   bool by_touch(const SensorReading& r) const { return !(r.range > 0.0); }
   double loop_tolerance() const { return p_.tolerance + 2.0 * p_.noise_margin; }
+  // How far the frame the robot plans in may have drifted from the record's beginning:
+  // kDriftDeviations standard deviations of the drift over the way walked since.
+  static constexpr double kDriftDeviations = 3.5;
+  double record_drift() const;
 
   TangentBugParams p_;
   Vec2 goal_;
@@ -183,6 +195,7 @@ class TangentBug final : public Planner {
   std::vector<Vec2> trail_;
   Vec2 trace_direction_;      // the boundary's direction where the record began
   double traced_ = 0.0;       // the record's length
+  double trace_path_ = 0.0;   // the path walked when the record began
   std::size_t obstacle_ = 0;  // in known_: to_projection, to_closest and settle
   RingPlace target_;
   bool straight_ = false;  // the last step went straight for target_
