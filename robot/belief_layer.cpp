@@ -1,7 +1,12 @@
 #include "robot/belief_layer.hpp"
 
-#include <algorithm>
+#include <fmt/format.h>
 
+#include <algorithm>
+#include <stdexcept>
+
+#include "planners/planner_map.hpp"
+#include "planners/planner_registry.hpp"
 #include "robot/localization_registry.hpp"
 #include "robot/mapping.hpp"
 
@@ -16,6 +21,18 @@ BeliefLayer::BeliefLayer(Kernel& kernel, const Environment& env, const Density& 
                                     LocalizationContext{kernel, starts, std::move(position)});
   sensing_ = SensorSpec{config.sensor.noise_sigma,
                         localization_ ? localization_->odometry_jitter(step_) : 0.0};
+  const PlannerEntry* planner = planner_registry().find(config.planner.type);
+  map_frame_ = localization_ && planner != nullptr && !planner->senses_only &&
+               !plans_on_sensed_map(config.planner.params);
+  if (map_frame_) {
+    const std::optional<double> sigma = localization_->estimate_sigma(config.max_speed);
+    if (!sigma)
+      throw std::invalid_argument(
+          fmt::format("{} localization beside the map planner {}: its error grows without bound",
+                      config.localization.type, config.planner.type));
+    inflation_ = config.inflation * *sigma;
+    after_motion_ = starts;
+  }
   if (config.mapping.unknown()) {
     mapping_ =
         std::make_unique<Mapping>(env, density, config.radius, config.sensor.range, config.mapping,
@@ -52,6 +69,15 @@ void BeliefLayer::moving(const Robot& r, Vec2 p, double length, SimTime now) {
 
 void BeliefLayer::moved(const Robot& r, Vec2 d) {
   if (localization_) localization_->moved(r.id, d);
+  if (map_frame_) after_motion_[r.id] = localization_->estimate(r.id);
+}
+
+bool BeliefLayer::estimate_jumped(const Robot& r) {
+  if (!map_frame_) return false;
+  const Vec2 e = localization_->estimate(r.id);
+  const bool jumped = distance(e, after_motion_[r.id]) > within_reach();
+  after_motion_[r.id] = e;
+  return jumped;
 }
 
 void BeliefLayer::arrived(const Robot& r, PlanStatus status, SimTime now) {
@@ -86,12 +112,13 @@ void BeliefLayer::believe(Knowledge& k, const CellIntegrator& integrator) {
   k.believed = &*b.partition;
 }
 
-Vec2 BeliefLayer::planner_position(const Robot& r) const {
+Vec2 BeliefLayer::planner_position(const Robot& r) {
+  if (map_frame_) return known_position(r);
   return localization_ ? localization_->odometry(r.id) : r.position;
 }
 
 Vec2 BeliefLayer::in_planner_frame(const Robot& r, Vec2 p) {
-  if (!localization_) return p;
+  if (!localization_ || map_frame_) return p;
   const Vec2 q = p - (localization_->estimate(r.id) - localization_->odometry(r.id));
   // A fix's noise must not make a goal the robot can reach one it cannot: moved by the fix's
   // error, a goal near a wall lands in it, and the planner walks round all of Ω to find it
@@ -107,11 +134,14 @@ double BeliefLayer::reach(double sigma) const {
 }
 
 double BeliefLayer::planner_reach() const {
-  return reach(sensing_.position_sigma);
+  return map_frame_ ? within_reach() : reach(sensing_.position_sigma);
 }
 
 double BeliefLayer::within_reach() const {
-  return localization_ ? reach(localization_->estimate_jitter(step_)) : tolerance_;
+  if (!localization_) return tolerance_;
+  // A planner on the inflated map stops that far short of a goal on Ω's boundary.
+  const double r = reach(localization_->estimate_jitter(step_));
+  return map_frame_ ? std::max(r, inflation_ + tolerance_) : r;
 }
 
 Vec2 BeliefLayer::known_position(const Robot& r) {
@@ -124,6 +154,11 @@ Vec2 BeliefLayer::known_position(const Robot& r) {
 bool BeliefLayer::goal_unreachable(const Robot& r) const {
   const Environment& space = free_space_(r.id);
   if (!localization_) return !space.contains(r.goal);
+  // On the inflated map: a goal within the inflation (and what the robot can tell) of the
+  // boundary lies outside it.
+  if (map_frame_)
+    return !space.contains(r.planner_goal) ||
+           space.boundary_distance(r.planner_goal) <= within_reach() + inflation_;
   // The planner's goal among the walls as it senses them; one nearer the boundary than the
   // robot can tell, or than its odometry has drifted while it walked, may have crossed it as
   // fixes and drift moved it.

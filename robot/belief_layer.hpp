@@ -47,12 +47,21 @@ class BeliefLayer {
   // Where robot r believes it is: its localization's estimate, taken into its free space (it
   // knows it is not inside a wall); its position with exact localization.
   Vec2 known_position(const Robot& r);
-  // Where robot r's planner believes it is: its odometry; its position with exact
-  // localization.
-  Vec2 planner_position(const Robot& r) const;
+  // Where robot r's planner believes it is: its odometry (a planner that senses works in its
+  // frame, so the walls it senses never jump), or, for a planner on Ω's map, the estimate;
+  // its position with exact localization.
+  Vec2 planner_position(const Robot& r);
   // A point of Ω in the frame robot r's planner works in; a point of r's free space stays in
-  // it (the map read in that frame).
+  // it (the map read in that frame). A planner on Ω's map works in Ω's frame.
   Vec2 in_planner_frame(const Robot& r, Vec2 p);
+  // Whether the planners plan on Ω's map from the estimate (a map planner beside a
+  // localization), and by how much that map is inflated: the configured number of standard
+  // deviations of the estimate's error (m).
+  bool map_frame() const { return map_frame_; }
+  double inflation() const { return inflation_; }
+  // For a planner on Ω's map: whether robot r's estimate jumped (a fix) since its last
+  // motion by more than it can tell; it then plans again from there.
+  bool estimate_jumped(const Robot& r);
   // Where robot r believes its centre may go, standing where it is: its map's free space
   // when it maps Ω, else its free space.
   const Environment& believed_free_space(const Robot& r) const;
@@ -113,6 +122,9 @@ class BeliefLayer {
   double localization_error_sum_ = 0.0, localization_error_max_ = 0.0;
   std::uint64_t localization_steps_ = 0;
   std::uint64_t discoveries_ = 0;
+  bool map_frame_ = false;
+  double inflation_ = 0.0;
+  std::vector<Vec2> after_motion_;  // map frame: each robot's estimate after its last motion
 };
 
 }  // namespace covsim

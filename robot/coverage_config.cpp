@@ -93,7 +93,17 @@ ConfigKeys<CoverageConfig> motion_keys() {
                                 "it, while cells and costs stay on Ω; 0: points")
                   .non_negative()
                   .defaults_to(d.radius),
-              &CoverageConfig::radius)};
+              &CoverageConfig::radius),
+          member_key<CoverageConfig>(
+              ParamSpec::number("inflation", "σ",
+                                "a map planner beside a localization other than exact plans on "
+                                "Ω shrunk by the radius plus this many standard deviations of "
+                                "the position estimate's error, from the estimate (a costmap's "
+                                "inflation)")
+                  .non_negative()
+                  .at_most(100.0)
+                  .defaults_to(d.inflation),
+              &CoverageConfig::inflation)};
 }
 
 ConfigKeys<CoverageConfig> projection_keys() {

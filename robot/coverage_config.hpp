@@ -101,7 +101,10 @@ struct CoverageConfig {
   std::optional<double> loop_ratio;
   double max_speed = 0.1;  // m/s
   // Robots are disks of this radius (0: points): they plan and move in Ω ⊖ radius.
-  double radius = 0.0;        // m
+  double radius = 0.0;  // m
+  // A map planner beside a localization plans on Ω shrunk by the radius plus this many
+  // standard deviations of the estimate's error (a costmap's inflation).
+  double inflation = 3.0;
   AvoidanceConfig avoidance;  // between bodies (radius > 0)
   KinematicsConfig kinematics;
   LocalizationConfig localization;  // what each robot knows of its own position

@@ -112,6 +112,11 @@ class CoverageController {
   // moves in.
   const ConfigurationSpace& configuration_space() const { return *space_; }
   const Environment& free_space(std::uint32_t i) const { return space_->part(part_[i]); }
+  // Where robot i's planner plans: its free space, or, for a map planner beside a
+  // localization, that shrunk further by the inflation.
+  const Environment& planner_space(std::uint32_t i) const {
+    return plan_space_ ? plan_space_->part(plan_part_[i]) : free_space(i);
+  }
   // With bodies (radius > 0): the least distance between two robots' bodies over the run's
   // motion steps (negative: they overlapped; NaN for points), robot-seconds spent with a
   // body overlapping another, and motion steps that ended with a body overlapping a wall.
@@ -179,7 +184,9 @@ class CoverageController {
   Kernel& kernel_;
   const Environment& env_;
   std::unique_ptr<ConfigurationSpace> space_;
-  std::vector<std::size_t> part_;  // robot i's part of space_
+  std::vector<std::size_t> part_;                   // robot i's part of space_
+  std::unique_ptr<ConfigurationSpace> plan_space_;  // inflated, for map planners; or unset
+  std::vector<std::size_t> plan_part_;              // robot i's part of plan_space_
   std::unique_ptr<BeliefLayer> belief_;
   std::unique_ptr<PlanningLayer> planning_;
   std::unique_ptr<MotionLayer> motion_;

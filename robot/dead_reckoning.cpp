@@ -79,6 +79,18 @@ double DeadReckoning::odometry_jitter(double step) const {
   return config_.drift * std::sqrt(step);
 }
 
+std::optional<double> DeadReckoning::estimate_sigma(double speed) const {
+  // Between fixes the odometry drifts over the way driven in a frame period; a fix applied
+  // uncompensated lags by the way driven over the latency.
+  if (!config_.rate) {
+    if (config_.drift > 0.0) return std::nullopt;
+    return 0.0;
+  }
+  const double between = config_.drift * config_.drift * speed / *config_.rate;
+  const double lag = config_.compensated ? 0.0 : speed * config_.latency.seconds();
+  return std::sqrt(config_.noise * config_.noise + between) + lag;
+}
+
 double DeadReckoning::estimate_jitter(double step) const {
   // A fix replaces one error by another, independent one; odometry adds drift over the step.
   const double fix = config_.rate ? 2.0 * config_.noise * config_.noise : 0.0;

@@ -39,6 +39,7 @@ class DeadReckoning final : public Localization {
   Vec2 estimate(std::uint32_t i) override;
   double odometry_jitter(double step) const override;
   double estimate_jitter(double step) const override;
+  std::optional<double> estimate_sigma(double speed) const override;
   std::uint64_t fixes() const override { return fixes_; }
 
  private:

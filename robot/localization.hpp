@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ class Localization {
   virtual double estimate_jitter(double step) const = 0;
   // Corrections (fixes) delivered so far.
   virtual std::uint64_t fixes() const { return 0; }
+  // The standard deviation, on each axis, of the estimate's error for a robot moving at
+  // `speed` (m/s); nullopt when it grows without bound (odometry with no fixes).
+  virtual std::optional<double> estimate_sigma(double speed) const = 0;
 };
 
 // What a localization is built for: the kernel (its events and random streams), where the
@@ -50,6 +54,9 @@ struct LocalizationContext {
 };
 
 struct LocalizationEntry : ComponentInfo {
+  // Whether its fixes keep the estimate's error bounded (a map planner's inflation covers
+  // it); false for odometry alone.
+  bool bounded = true;
   // Returns null for `exact`, whose estimate is the position itself.
   std::function<std::unique_ptr<Localization>(const LocalizationContext&, const Params&)> make;
 };

@@ -9,6 +9,7 @@ LocalizationEntry odometry_entry() {
   e.name = "odometry";
   e.description = "dead reckoning from the known start, drifting with the distance travelled";
   e.params = {drift_parameter(0.01)};
+  e.bounded = false;
   e.make = [](const LocalizationContext& c, const Params& p) -> std::unique_ptr<Localization> {
     DeadReckoningConfig d;
     d.drift = p.number("drift");

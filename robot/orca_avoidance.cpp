@@ -12,7 +12,7 @@ namespace {
 // Section 5.1): u is the least change of the relative velocity that leaves the truncated
 // velocity obstacle, the robot taking `share` of it.
 VelocityConstraint orca_plane(const AvoidanceQuery& q, const SensedNeighbor& n, double horizon,
-                     double share) {
+                              double share) {
   const Vec2 rel_pos = n.position - q.position;
   const Vec2 rel_vel = q.velocity - n.velocity;
   const double dist2 = norm2(rel_pos);

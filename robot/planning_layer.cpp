@@ -11,14 +11,16 @@ namespace covsim {
 
 PlanningLayer::PlanningLayer(const Kernel& kernel, BeliefLayer& belief, SensorModel& sensor,
                              double step, double radius, const ConfigurationSpace& space,
-                             const std::vector<std::size_t>& part)
+                             const std::vector<std::size_t>& part,
+                             std::function<const Environment&(std::uint32_t)> planner_space)
     : kernel_(kernel),
       belief_(belief),
       sensor_(sensor),
       step_(step),
       radius_(radius),
       space_(space),
-      part_(part) {}
+      part_(part),
+      planner_space_(std::move(planner_space)) {}
 
 void PlanningLayer::set_goal(Robot& r, Vec2 goal) {
   r.goal = goal;
@@ -38,7 +40,13 @@ void PlanningLayer::move_goal(Robot& r, Vec2 goal) {
 PlanStep PlanningLayer::step(Robot& r) {
   // The planner works in its frame: from where it believes the robot is, the walls where it
   // senses them from there.
-  const Vec2 known = belief_.planner_position(r);
+  Vec2 known = belief_.planner_position(r);
+  // On Ω's map, from the estimate taken into the inflated free space (a robot within the
+  // inflation of a wall plans from its edge).
+  if (belief_.map_frame()) {
+    const Environment& e = planner_space_(r.id);
+    if (!e.contains(known)) known = e.closest_point(known);
+  }
   const bool exact = known == r.position;
   const PlanStep s = guarded_call(r.id, "planner", r.planner->name(), kernel_.now(), [&] {
     SensorReading reading = sensor_.reading(r.id, r.position);

@@ -12,6 +12,7 @@
 #include "geometry/ring_validation.hpp"
 #include "net/message.hpp"
 #include "planners/planner_map.hpp"
+#include "robot/localization_registry.hpp"
 #include "scenarios/component_reader.hpp"
 #include "scenarios/component_sections.hpp"
 #include "scenarios/input_file.hpp"
@@ -153,16 +154,25 @@ void read_components(const JsonValue& root, CoverageConfig& c) {
     if (auto loc = r->find("localization")) {
       const ComponentChoice choice = read_component(*loc, component_section<LocalizationEntry>());
       c.localization = LocalizationConfig{choice.type, choice.params};
-      // A planner on Ω's map plans paths that graze its corners, from a position it would
-      // have to know exactly.
+      // A planner on Ω's map plans from the estimate, on Ω inflated by the estimate's
+      // error, which must stay bounded; a map of sensed walls placed by an uncertain
+      // position (SLAM) is not modelled.
       const PlannerEntry* planner = planner_registry().find(c.planner.type);
+      const LocalizationEntry& located = localization_registry().at(c.localization.type);
       if (c.localization.type != LocalizationConfig{}.type && planner != nullptr &&
-          !planner->senses_only)
-        loc->fail(fmt::format(
-            "{} localization needs a planner that plans from what it senses alone "
-            "(tangent_bug); {} plans on a map (given: Ω, from a position it would have to "
-            "know exactly; sensed: walls placed by an uncertain position, SLAM, not modelled)",
-            c.localization.type, c.planner.type));
+          !planner->senses_only) {
+        if (plans_on_sensed_map(c.planner.params))
+          loc->fail(fmt::format(
+              "{} localization beside planner.map \"sensed\": a map of walls placed by an "
+              "uncertain position (SLAM) is not modelled; use planner.map \"given\" or "
+              "tangent_bug",
+              c.localization.type));
+        if (!located.bounded)
+          loc->fail(fmt::format(
+              "{} localization beside the map planner {}: its error grows without bound, so "
+              "no inflation of the map covers it; use tracking (fixes) or tangent_bug",
+              c.localization.type, c.planner.type));
+      }
     }
   }
   if (auto k = root.find("controller")) {

@@ -107,3 +107,34 @@ TEST_CASE("belief layer: a robot that does not know Ω believes the map it has b
   b.arrived(r, PlanStatus::projected, SimTime{});
   CHECK(b.discoveries() == 1);
 }
+
+TEST_CASE(
+    "belief layer: a map planner beside a tracking system plans from the estimate, "
+    "on the map inflated by its error",
+    "[layers]") {
+  CoverageConfig config;
+  config.planner.type = "grid_astar";
+  config.localization.type = "tracking";
+  config.localization.params.set("noise", 0.005);
+  OneRobot w{config};
+  BeliefLayer& b = *w.belief;
+  Robot& r = w.robots[0];
+  REQUIRE(b.map_frame());
+  // Three standard deviations of a fix's noise (no drift between fixes).
+  CHECK(b.inflation() == Approx(0.015));
+  CHECK(b.within_reach() >= b.inflation());
+  CHECK(b.planner_reach() == b.within_reach());
+  // Ω's frame: goals as they are, the planner at the estimate.
+  CHECK(b.in_planner_frame(r, {0.9, 0.1}) == Vec2{0.9, 0.1});
+  CHECK(b.planner_position(r) == b.known_position(r));
+  // A goal nearer a wall than the inflation is one the planner cannot reach.
+  r.planner_goal = {0.9, 0.99};
+  CHECK(b.goal_unreachable(r));
+  r.planner_goal = {0.9, 0.9};
+  CHECK_FALSE(b.goal_unreachable(r));
+  // TangentBug beside the same tracking system works in the odometry's frame, uninflated.
+  config.planner.type = "tangent_bug";
+  OneRobot t{config};
+  CHECK_FALSE(t.belief->map_frame());
+  CHECK(t.belief->inflation() == 0.0);
+}

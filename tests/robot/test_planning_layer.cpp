@@ -56,7 +56,8 @@ struct Layers {
     belief = std::make_unique<BeliefLayer>(kernel, env, density, std::vector<Vec2>{{0.5, 0.5}},
                                            config, 0.01, 1e-3, at, space_of);
     sensor = std::make_unique<SensorModel>(kernel, space_of, config.sensor, 1, at);
-    planning = std::make_unique<PlanningLayer>(kernel, *belief, *sensor, 0.01, 0.0, space, part);
+    planning =
+        std::make_unique<PlanningLayer>(kernel, *belief, *sensor, 0.01, 0.0, space, part, space_of);
   }
 };
 
