@@ -68,9 +68,14 @@ struct PlannerEntry : ComponentInfo {
   // Its steps depend on the range sensor's range (a sensor-range study varies them).
   bool reads_range = false;
   // It plans from its sensor readings alone, never from its map of Ω: it works from an
-  // estimated position (robots.localization), in the robot's odometry frame. A planner that
-  // consults the map needs the robot's position exactly (its paths graze Ω's corners).
+  // estimated position (robots.localization), in the robot's odometry frame, and runs where
+  // the robots do not know Ω. A planner on Ω's map works in Ω's frame from the estimate, on
+  // the map inflated by its error (robot/belief_layer).
   bool senses_only = false;
+  // It takes the walls of the readings its robot hears from neighbours (Planner::learn) when
+  // robots that do not know Ω share their maps decentralized (a map planner on a sensed map
+  // does, whatever this says).
+  bool learns = false;
 };
 
 // A scenario's "planner": the type, and its parameters validated against its schema.

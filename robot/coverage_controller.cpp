@@ -99,7 +99,9 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   const bool ideal = config_.network.channel.is_ideal();
   Mapping* mapping = belief_->mapping();
   // Decentralized, each robot's map planner also takes the walls of the readings it hears.
-  if (mapping && !ideal && plans_on_sensed_map(config_.planner.params))
+  const PlannerEntry* entry = planner_registry().find(config_.planner.type);
+  if (mapping && !ideal &&
+      (plans_on_sensed_map(config_.planner.params) || (entry != nullptr && entry->learns)))
     mapping->on_learn([this](std::uint32_t i, const Scan& s) { planning_->learn(robots_[i], s); });
   if (ideal) {
     view_ = std::make_unique<IdealView>(*state_);

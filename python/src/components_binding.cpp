@@ -106,6 +106,20 @@ class PyPlanner final : public Planner {
     py::gil_scoped_acquire gil;
     obj_->attr(py::hasattr(*obj_, "move_goal") ? "move_goal" : "set_goal")(to_array(goal));
   }
+  void learn(const std::vector<SensedPiece>& walls) override {
+    py::gil_scoped_acquire gil;
+    if (!py::hasattr(*obj_, "learn")) return;
+    py::array_t<double> rows({static_cast<py::ssize_t>(walls.size()), py::ssize_t{4}});
+    auto w = rows.mutable_unchecked<2>();
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+      const auto i = static_cast<py::ssize_t>(k);
+      w(i, 0) = walls[k].a.x;
+      w(i, 1) = walls[k].a.y;
+      w(i, 2) = walls[k].b.x;
+      w(i, 3) = walls[k].b.y;
+    }
+    obj_->attr("learn")(rows);
+  }
   PlanStep step(const SensorReading& reading, double max_step) override {
     py::gil_scoped_acquire gil;
     const py::object returned = obj_->attr("step")(PyReading(reading), max_step);
@@ -300,7 +314,7 @@ void bind_components(py::module_& m) {
   m.def(
       "register_planner",
       [](const std::string& name, py::object factory, const std::string& description,
-         const py::dict& params, bool complete) {
+         const py::dict& params, bool complete, bool senses) {
         PlannerEntry e;
         e.name = name;
         e.description = description.empty() ? "a planner written in Python" : description;
@@ -308,14 +322,19 @@ void bind_components(py::module_& m) {
         if (!PyCallable_Check(factory.ptr()))
           throw py::type_error("register_planner(\"" + name +
                                "\"): factory must be callable, found " + type_name(factory));
+        // A planner that senses is told nothing of Ω (its factory gets None), works from the
+        // estimate in the odometry's frame, runs where Ω is unknown, and takes the walls its
+        // robot hears through learn(walls) if it has one.
+        e.senses_only = e.reads_range = senses;
+        e.learns = senses && py::hasattr(factory, "learn");
         const PyRef f = hold(std::move(factory));
-        e.make = [f, name](const PlannerContext& ctx, const Params& p) -> PlannerSource {
+        e.make = [f, name, senses](const PlannerContext& ctx, const Params& p) -> PlannerSource {
           // A copy per run: Python may keep the Environment after the run has ended.
-          const auto env = std::make_shared<const Environment>(ctx.environment);
+          const auto env = senses ? nullptr : std::make_shared<const Environment>(ctx.environment);
           return [f, name, env, p] {
             py::gil_scoped_acquire gil;
-            return std::make_unique<PyPlanner>(hold((*f)(PyEnvironment{env}, params_dict(p))),
-                                               name);
+            const py::object told = env ? py::cast(PyEnvironment{env}) : py::none();
+            return std::make_unique<PyPlanner>(hold((*f)(told, params_dict(p))), name);
           };
         };
         e.contract.complete = complete;
@@ -323,14 +342,17 @@ void bind_components(py::module_& m) {
         python_planners().insert(name);
       },
       py::arg("name"), py::arg("factory"), py::arg("description") = "",
-      py::arg("params") = py::dict(), py::arg("complete") = false,
+      py::arg("params") = py::dict(), py::arg("complete") = false, py::arg("senses") = false,
       "Registers a planner written in Python under `name`, selectable as a scenario's "
       "planner.type. factory(environment, params) makes one per robot: an object with "
       "set_goal(goal) and step(reading, max_step) -> (next, status), status one of 'moving', "
       "'reached', 'projected', 'stalled', and optionally move_goal(goal) (the goal moved "
       "while on the way; set_goal without it). params: {name: default}, validated in scenarios "
       "like a built-in planner's. complete: whether it promises to reach every reachable "
-      "goal (docs/python.md).");
+      "goal. senses: it plans from its readings alone; factory gets None for the environment; it "
+      "runs where the robots do not know Ω, beside any localization, and an optional "
+      "learn(walls) takes the walls, (k, 4) rows ax, ay, bx, by [m], of readings its robot "
+      "hears from neighbours (docs/python.md).");
   m.def(
       "register_law",
       [](const std::string& name, py::object factory, const std::string& description,

@@ -165,3 +165,60 @@ def test_a_python_planner_that_drives_through_walls_ends_the_run_where_it_leaves
     builtin = covsim.Simulation(s).run()
     assert python["stop_reason"] == "left_environment"
     assert python["left_environment"] == builtin["left_environment"]
+
+
+class Feeler:
+    """A planner in Python that senses: told nothing of Ω, it goes straight at the goal and
+    stalls where a wall it sees is in the way; it keeps the walls its neighbours share."""
+
+    made = []
+
+    def __init__(self, environment, params):
+        self.environment = environment
+        self.goal = None
+        self.heard = []
+        Feeler.made.append(self)
+
+    def set_goal(self, goal):
+        self.goal = np.array(goal)
+
+    def learn(self, walls):
+        self.heard.append(walls)
+
+    def step(self, reading, max_step):
+        x = reading.position
+        d = np.linalg.norm(self.goal - x)
+        if d <= 1e-9:
+            return self.goal, "reached"
+        nxt = self.goal if d <= max_step else x + max_step * (self.goal - x) / d
+
+        def side(p, q, r):
+            return np.sign((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]))
+
+        for ax, ay, bx, by in reading.pieces:
+            a, b = (ax, ay), (bx, by)
+            if side(x, nxt, a) * side(x, nxt, b) < 0 and side(a, b, x) * side(a, b, nxt) < 0:
+                return x, "stalled"
+        return nxt, "moving"
+
+
+def test_a_python_planner_that_senses_runs_where_omega_is_unknown_and_hears_walls(scenarios):
+    covsim.register_planner("py_feeler", Feeler, "straight, on what it senses", senses=True)
+    s = covsim.Scenario.from_file(scenarios / "two_obstacles.json")
+    s.set("environment.known", "none")
+    s.set("sensor", {"range": 0.5})
+    s.set("network", {"loss": {"model": "bernoulli", "p": 0.1}})
+    s.set("mapping", {"compare_known": False})
+    s.set("convergence", {"max_time": 20})
+    s.set("planner", {"type": "py_feeler"})
+    Feeler.made.clear()
+    out = covsim.Simulation(s).run()
+    assert out["stop_reason"] in ("converged", "stuck", "max_time")
+    # Told nothing of Ω; decentralized, the walls of readings heard, as (k, 4) rows.
+    assert len(Feeler.made) == 5 and all(p.environment is None for p in Feeler.made)
+    heard = [w for p in Feeler.made for w in p.heard]
+    assert heard and all(w.ndim == 2 and w.shape[1] == 4 for w in heard)
+    assert any(len(w) > 0 for w in heard)
+    # A planner told Ω is refused where the robots do not know it.
+    with pytest.raises(Exception, match="plans from what it senses"):
+        s.set("planner", {"type": "py_straight"})
