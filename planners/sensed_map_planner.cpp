@@ -59,16 +59,15 @@ bool SensedMapPlanner::wall_nearer_than(const std::optional<SensedMap::Landing>&
   return false;
 }
 
-bool SensedMapPlanner::cut_off(Vec2 x, Vec2 y) const {
-  const auto from = map_->entry(x);
-  if (!from) return false;
-  const auto reach = map_->reach(*from);
-  return !map_->entry(y, 4, &reach);
+bool SensedMapPlanner::cut_off(const std::vector<std::uint8_t>& reach, Vec2 y) const {
+  return !reach.empty() && !map_->entry(y, 4, &reach);
 }
 
 bool SensedMapPlanner::plan_on(const SensedMap& m, Vec2 x,
-                               std::optional<SensedMap::Landing>& landing) {
+                               std::optional<SensedMap::Landing>& landing,
+                               std::vector<std::uint8_t>& reach) {
   landing.reset();
+  reach.clear();
   if (!projecting_) {
     if (auto path = route(m, x, goal_)) {
       follower_.assign(std::move(*path));
@@ -77,7 +76,10 @@ bool SensedMapPlanner::plan_on(const SensedMap& m, Vec2 x,
     }
   }
   planning_ = &m;
-  if (const auto from = m.entry(x)) landing = m.closest_reachable_wall(goal_, m.reach(*from));
+  if (const auto from = m.entry(x)) {
+    reach = m.reach(*from);
+    landing = m.closest_reachable_wall(goal_, reach);
+  }
   return false;
 }
 
@@ -116,12 +118,15 @@ void SensedMapPlanner::replan(Vec2 x) {
   // the nearest free cell.
   if (map_->spread() > 0.0 && !map_->entry(x) && escape(x)) return;
   std::optional<SensedMap::Landing> landing;
-  if (plan_on(*map_, x, landing)) return;
+  std::vector<std::uint8_t> reach;  // the cells the robot's cell reaches on the map
+  if (plan_on(*map_, x, landing, reach)) return;
   // (A noisy map's pieces lie off the walls: the robot settles by touch there instead.)
-  if (map_->spread() == 0.0 && (wall_nearer_than(landing) || cut_off(x, set_from_)))
+  const bool finer_possible = finer_ != nullptr || !finer_tried_;
+  if (map_->spread() == 0.0 && finer_possible &&
+      (wall_nearer_than(landing) || cut_off(reach, set_from_)))
     if (const SensedMap* finer = finer_map()) {
       std::optional<SensedMap::Landing> there;
-      if (plan_on(*finer, x, there)) return;
+      if (plan_on(*finer, x, there, reach)) return;
       if (there && (!landing || distance(goal_, there->point) < distance(goal_, landing->point)))
         landing = there;
       else

@@ -64,13 +64,15 @@ class SensedMapPlanner : public Planner {
   void replan(Vec2 x);
   // On `m`: whether a path to the goal was found (and is followed), else the projection
   // there, if any.
-  bool plan_on(const SensedMap& m, Vec2 x, std::optional<SensedMap::Landing>& landing);
+  // `reach`: the cells of `m` the robot's cell reaches, when it enters the grid (else empty).
+  bool plan_on(const SensedMap& m, Vec2 x, std::optional<SensedMap::Landing>& landing,
+               std::vector<std::uint8_t>& reach);
   // Whether the landing leaves a wall nearer the goal than itself: on an exact map the walls
   // that cut a goal off were seen from the robot's side, so the cells closed a way.
   bool wall_nearer_than(const std::optional<SensedMap::Landing>& landing) const;
-  // Whether the map's cells part x from y, a point the robot stood at: they closed a way it
-  // took.
-  bool cut_off(Vec2 x, Vec2 y) const;
+  // Whether the map's cells part the robot (`reach`: the cells its cell reaches) from y, a
+  // point it stood at: they closed a way it took.
+  bool cut_off(const std::vector<std::uint8_t>& reach, Vec2 y) const;
   // The finer grid, brought up to date with the robot's map; nullptr past its size.
   const SensedMap* finer_map();
   // Whether the rest of the path, from x, is still clear on the map, which gained the pieces
@@ -90,9 +92,9 @@ class SensedMapPlanner : public Planner {
   std::shared_ptr<SensedMap> map_;
   // An exact map's cells may close a way the pieces leave open (a slot of a few cells whose
   // walls were learnt by touch): where the robot's grid finds no way to the goal and a wall
-  // lies nearer it than the landing, or they part the robot from where it set out, the planner
-  // tries the same pieces on cells kFiner times
-  // finer (built when first needed, then kept up to date) before it settles for the landing.
+  // lies nearer it than the landing, or they part the robot from where it set out, the
+  // planner tries the same pieces on cells kFiner times finer (built when first needed, then
+  // kept up to date) before it settles for the landing.
   static constexpr std::int32_t kFiner = 2;
   static constexpr double kMaxFinerCells = double(1 << 22);
   std::unique_ptr<SensedMap> finer_;

@@ -36,23 +36,12 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
       kernel_, env, density, starts, config_, step_, tol_.position,
       [this](std::uint32_t i) { return robots_[i].position; },
       [this](std::uint32_t i) -> const Environment& { return free_space(i); });
-  // A map planner beside a localization plans from the estimate on Ω shrunk further by the
-  // estimate's error (the inflation): the robot, within that of its estimate, stays clear.
-  if (belief_->map_frame() && belief_->inflation() > 0.0) {
-    try {
-      plan_space_ =
-          std::make_unique<ConfigurationSpace>(env, config_.radius + belief_->inflation());
-    } catch (const std::exception& e) {
-      throw std::invalid_argument(fmt::format(
-          "robots.inflation: Ω shrunk by the radius and {} standard deviations of the position "
-          "estimate ({} m in all) leaves the map planners no free space ({})",
-          config_.inflation, config_.radius + belief_->inflation(), e.what()));
-    }
-  }
-  const ConfigurationSpace& planning = plan_space_ ? *plan_space_ : *space_;
+  planner_space_ = std::make_unique<PlannerSpace>(env, *space_, config_.radius,
+                                                  belief_->map_frame() ? belief_->inflation() : 0.0,
+                                                  config_.inflation);
   // Each part of the free space has its planners' shared maps, built for the first robot in it
   // (centralized, with the ideal network, one sensed map for the robots' planners too).
-  std::vector<std::optional<PlannerSource>> sources(planning.part_count());
+  std::vector<std::optional<PlannerSource>> sources(planner_space_->part_count());
   for (std::uint32_t i = 0; i < starts.size(); ++i) {
     std::size_t part = 0;
     if (config_.radius > 0.0) {
@@ -65,19 +54,7 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
       part = *k;
     }
     part_.push_back(part);
-    if (plan_space_) {
-      // The inflated part holding the start, or the nearest one (a start within the
-      // inflation of a wall).
-      std::optional<std::size_t> k = plan_space_->part_of(starts[i]);
-      double nearest = INFINITY;
-      for (std::size_t q = 0; !k.has_value() && q < plan_space_->part_count(); ++q) {
-        const Environment& e = plan_space_->part(q);
-        const double d = distance(starts[i], e.closest_point(starts[i]));
-        if (d < nearest) nearest = d, part = q;
-      }
-      part = k.value_or(part);
-    }
-    plan_part_.push_back(part);
+    const std::size_t plan_part = planner_space_->add(starts[i], part);
     Robot r;
     r.id = i;
     r.position = r.virtual_generator = r.virtual_target = r.real_target = r.goal = r.assigned =
@@ -85,11 +62,11 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
     if (make_planner) {
       r.planner = make_planner(i);
     } else {
-      if (!sources[part])
-        sources[part] =
-            planner_source(config_.planner, PlannerContext{planning.part(part), belief_->sensing(),
-                                                           config_.network.channel.is_ideal()});
-      r.planner = (*sources[part])();
+      if (!sources[plan_part])
+        sources[plan_part] = planner_source(
+            config_.planner, PlannerContext{planner_space_->part(plan_part), belief_->sensing(),
+                                            config_.network.channel.is_ideal()});
+      r.planner = (*sources[plan_part])();
     }
     if (wrap) r.planner = wrap(std::move(r.planner));
     robots_.push_back(std::move(r));
@@ -111,9 +88,8 @@ CoverageController::CoverageController(Kernel& kernel, const Environment& env,
   sensor_ = std::make_unique<SensorModel>(
       kernel_, [this](std::uint32_t i) -> const Environment& { return free_space(i); },
       config_.sensor, robots_.size(), [this](std::uint32_t i) { return robots_[i].position; });
-  planning_ = std::make_unique<PlanningLayer>(
-      kernel_, *belief_, *sensor_, step_, config_.radius, *space_, part_,
-      [this](std::uint32_t i) -> const Environment& { return planner_space(i); });
+  planning_ = std::make_unique<PlanningLayer>(kernel_, *belief_, *sensor_, step_, config_.radius,
+                                              *space_, part_, *planner_space_);
   motion_ = std::make_unique<MotionLayer>(
       kernel_, env, config_, robots_,
       MotionHost{[this](Robot& r, Vec2 p) { move_to(r, p); },

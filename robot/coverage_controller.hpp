@@ -53,6 +53,7 @@
 #include "robot/generator_state.hpp"
 #include "robot/motion_layer.hpp"
 #include "robot/neighbor_view.hpp"
+#include "robot/planner_space.hpp"
 #include "robot/planning_layer.hpp"
 #include "robot/robot.hpp"
 #include "robot/sensor_model.hpp"
@@ -114,9 +115,7 @@ class CoverageController {
   const Environment& free_space(std::uint32_t i) const { return space_->part(part_[i]); }
   // Where robot i's planner plans: its free space, or, for a map planner beside a
   // localization, that shrunk further by the inflation.
-  const Environment& planner_space(std::uint32_t i) const {
-    return plan_space_ ? plan_space_->part(plan_part_[i]) : free_space(i);
-  }
+  const Environment& planner_space(std::uint32_t i) const { return planner_space_->of(i); }
   // With bodies (radius > 0): the least distance between two robots' bodies over the run's
   // motion steps (negative: they overlapped; NaN for points), robot-seconds spent with a
   // body overlapping another, and motion steps that ended with a body overlapping a wall.
@@ -184,9 +183,8 @@ class CoverageController {
   Kernel& kernel_;
   const Environment& env_;
   std::unique_ptr<ConfigurationSpace> space_;
-  std::vector<std::size_t> part_;                   // robot i's part of space_
-  std::unique_ptr<ConfigurationSpace> plan_space_;  // inflated, for map planners; or unset
-  std::vector<std::size_t> plan_part_;              // robot i's part of plan_space_
+  std::vector<std::size_t> part_;  // robot i's part of space_
+  std::unique_ptr<PlannerSpace> planner_space_;
   std::unique_ptr<BeliefLayer> belief_;
   std::unique_ptr<PlanningLayer> planning_;
   std::unique_ptr<MotionLayer> motion_;

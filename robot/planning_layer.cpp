@@ -11,8 +11,7 @@ namespace covsim {
 
 PlanningLayer::PlanningLayer(const Kernel& kernel, BeliefLayer& belief, SensorModel& sensor,
                              double step, double radius, const ConfigurationSpace& space,
-                             const std::vector<std::size_t>& part,
-                             std::function<const Environment&(std::uint32_t)> planner_space)
+                             const std::vector<std::size_t>& part, const PlannerSpace& planners)
     : kernel_(kernel),
       belief_(belief),
       sensor_(sensor),
@@ -20,7 +19,7 @@ PlanningLayer::PlanningLayer(const Kernel& kernel, BeliefLayer& belief, SensorMo
       radius_(radius),
       space_(space),
       part_(part),
-      planner_space_(std::move(planner_space)) {}
+      planners_(planners) {}
 
 void PlanningLayer::set_goal(Robot& r, Vec2 goal) {
   r.goal = goal;
@@ -44,7 +43,7 @@ PlanStep PlanningLayer::step(Robot& r) {
   // On Ω's map, from the estimate taken into the inflated free space (a robot within the
   // inflation of a wall plans from its edge).
   if (belief_.map_frame()) {
-    const Environment& e = planner_space_(r.id);
+    const Environment& e = planners_.of(r.id);
     if (!e.contains(known)) known = e.closest_point(known);
   }
   const bool exact = known == r.position;

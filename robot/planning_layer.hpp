@@ -10,6 +10,7 @@
 #include "core/kernel.hpp"
 #include "geometry/configuration_space.hpp"
 #include "robot/belief_layer.hpp"
+#include "robot/planner_space.hpp"
 #include "robot/robot.hpp"
 #include "robot/sensor_model.hpp"
 
@@ -21,12 +22,11 @@ class PlanningLayer {
  public:
   // `step`: the step length (m); `radius`: the bodies'; `space`, `part`: where robot centres
   // may go, and robot i's part of it. All outlive the layer.
-  // `planner_space`: where robot i's planner plans (for a planner on Ω's map beside a
+  // `planners`: where each robot's planner plans (for a planner on Ω's map beside a
   // localization, the free space shrunk by the inflation).
   PlanningLayer(const Kernel& kernel, BeliefLayer& belief, SensorModel& sensor, double step,
                 double radius, const ConfigurationSpace& space,
-                const std::vector<std::size_t>& part,
-                std::function<const Environment&(std::uint32_t)> planner_space);
+                const std::vector<std::size_t>& part, const PlannerSpace& planners);
 
   // A new goal for robot r's planner, which starts afresh.
   void set_goal(Robot& r, Vec2 goal);
@@ -49,7 +49,7 @@ class PlanningLayer {
   double step_, radius_;
   const ConfigurationSpace& space_;
   const std::vector<std::size_t>& part_;
-  std::function<const Environment&(std::uint32_t)> planner_space_;
+  const PlannerSpace& planners_;
 };
 
 }  // namespace covsim

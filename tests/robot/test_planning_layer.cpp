@@ -41,6 +41,7 @@ struct Layers {
   UniformDensity density;
   ConfigurationSpace space{env, 0.0};
   std::vector<std::size_t> part{0};
+  PlannerSpace planners{env, space, 0.0, 0.0, 3.0};
   std::vector<Robot> robots = std::vector<Robot>(1);
   std::unique_ptr<BeliefLayer> belief;
   std::unique_ptr<SensorModel> sensor;
@@ -56,8 +57,9 @@ struct Layers {
     belief = std::make_unique<BeliefLayer>(kernel, env, density, std::vector<Vec2>{{0.5, 0.5}},
                                            config, 0.01, 1e-3, at, space_of);
     sensor = std::make_unique<SensorModel>(kernel, space_of, config.sensor, 1, at);
+    planners.add({0.5, 0.5}, 0);
     planning =
-        std::make_unique<PlanningLayer>(kernel, *belief, *sensor, 0.01, 0.0, space, part, space_of);
+        std::make_unique<PlanningLayer>(kernel, *belief, *sensor, 0.01, 0.0, space, part, planners);
   }
 };
 
