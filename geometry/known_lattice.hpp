@@ -29,6 +29,8 @@ class KnownLattice {
   std::int32_t nx() const { return nx_; }
   std::int32_t ny() const { return ny_; }
   double cell() const { return cell_; }
+  // The lower-left corner of cell (0, 0).
+  Vec2 origin() const { return origin_; }
   Vec2 centre(std::int32_t i, std::int32_t j) const {
     return {origin_.x + (i + 0.5) * cell_, origin_.y + (j + 0.5) * cell_};
   }

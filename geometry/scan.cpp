@@ -1,7 +1,9 @@
 #include "geometry/scan.hpp"
 
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <utility>
 
 namespace covsim {
 
@@ -116,6 +118,38 @@ std::vector<Scan> split_scan(const Environment& env, Scan scan, std::uint32_t ma
     out.push_back(std::move(part));
   }
   return out;
+}
+
+void add_range_noise(Scan& scan, RandomStream& rng, double sigma, double tolerance) {
+  if (!(sigma > 0.0)) return;
+  // Each measured point once, drawn in the order the pieces meet it.
+  std::map<std::pair<double, double>, Vec2> moved;
+  const auto jitter = [&](Vec2 q) {
+    const auto key = std::make_pair(q.x, q.y);
+    if (const auto it = moved.find(key); it != moved.end()) return it->second;
+    const Vec2 d = q - scan.origin;
+    const double n = norm(d);
+    const Vec2 out =
+        n <= tolerance ? q : scan.origin + (std::max(0.0, n + rng.normal(0.0, sigma)) / n) * d;
+    moved.emplace(key, out);
+    return out;
+  };
+  for (VisiblePiece& p : scan.pieces) {
+    p.a = jitter(p.a);
+    p.b = jitter(p.b);
+  }
+  for (Vec2& v : scan.fan)
+    if (const auto it = moved.find(std::make_pair(v.x, v.y)); it != moved.end()) v = it->second;
+}
+
+void shift(Scan& scan, Vec2 offset) {
+  scan.origin = scan.origin + offset;
+  for (VisiblePiece& p : scan.pieces) {
+    p.a = p.a + offset;
+    p.b = p.b + offset;
+  }
+  for (Vec2& v : scan.fan)
+    v = v + offset;
 }
 
 }  // namespace covsim

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/random_stream.hpp"
 #include "geometry/visibility.hpp"
 
 namespace covsim {
@@ -34,5 +35,14 @@ Scan take_scan(const Environment& env, Vec2 origin, double range);
 // A scan whose message would exceed max_bytes, cut into scans of consecutive pieces that
 // each fit (each with the fan of its pieces alone); scans that fit are returned as they are.
 std::vector<Scan> split_scan(const Environment& env, Scan scan, std::uint32_t max_bytes);
+
+// The reading as a noisy range sensor gives it: every wall point it measured farther than
+// `tolerance` from the origin moves along its ray by N(0, sigma²) (never behind the origin),
+// a point two pieces share once; the fan moves with them (its chords at the range are no
+// measurement and stay).
+void add_range_noise(Scan& scan, RandomStream& rng, double sigma, double tolerance);
+
+// The reading as a robot that believes it stands `offset` from where it does places it.
+void shift(Scan& scan, Vec2 offset);
 
 }  // namespace covsim

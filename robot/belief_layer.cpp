@@ -17,8 +17,8 @@ BeliefLayer::BeliefLayer(Kernel& kernel, const Environment& env, const Density& 
                          double tolerance, std::function<Vec2(std::uint32_t)> position,
                          std::function<const Environment&(std::uint32_t)> free_space)
     : free_space_(std::move(free_space)), step_(step), tolerance_(tolerance) {
-  localization_ = make_localization(config.localization,
-                                    LocalizationContext{kernel, starts, std::move(position)});
+  localization_ =
+      make_localization(config.localization, LocalizationContext{kernel, starts, position});
   sensing_ = SensorSpec{config.sensor.noise_sigma,
                         localization_ ? localization_->odometry_jitter(step_) : 0.0};
   const PlannerEntry* planner = planner_registry().find(config.planner.type);
@@ -38,6 +38,19 @@ BeliefLayer::BeliefLayer(Kernel& kernel, const Environment& env, const Density& 
         std::make_unique<Mapping>(env, density, config.radius, config.sensor.range, config.mapping,
                                   starts.size(), config.network.channel.is_ideal());
     mapping_->set_clock([&kernel] { return kernel.now(); });
+    // Uncertain readings (noisy ranges, placed by an estimate) make an occupancy grid.
+    const bool uncertain = localization_ || config.sensor.noise_sigma > 0.0;
+    if (config.mapping.model == "occupancy" || (config.mapping.model == "auto" && uncertain)) {
+      std::vector<RandomStream> streams;
+      for (std::uint32_t i = 0; i < starts.size(); ++i)
+        streams.push_back(kernel.stream(i, "mapping-noise"));
+      const auto believed = [this, position](std::uint32_t i) {
+        return localization_ ? localization_->estimate(i) : position(i);
+      };
+      mapping_->use_grid(
+          config.sensor.noise_sigma, std::move(streams),
+          [believed, position](std::uint32_t i) { return believed(i) - position(i); }, believed);
+    }
   }
 }
 

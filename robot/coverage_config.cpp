@@ -172,7 +172,35 @@ ConfigKeys<CoverageConfig> mapping_keys() {
                                  "map.csv also holds when each robot's own map first held each "
                                  "cell (decentralized runs), for figures of one robot's map")
                   .defaults_to(d.mapping.robot_maps),
-              &CoverageConfig::mapping, &MappingConfig::robot_maps)};
+              &CoverageConfig::mapping, &MappingConfig::robot_maps),
+          Key{ParamSpec::choice("model", {"auto", "polygons", "occupancy"},
+                                "the map: \"polygons\" (the obstacles whose walls the readings "
+                                "showed, exact), \"occupancy\" (a log-odds occupancy grid on the "
+                                "lattice's cells, for uncertain readings) or \"auto\" (polygons "
+                                "when readings are exact, else occupancy)")
+                  .defaults_to(d.mapping.model),
+              [](CoverageConfig& c, const ParamValue& v) {
+                c.mapping.model = std::get<std::string>(v);
+              },
+              [](const CoverageConfig& c, const RunShape&) -> std::optional<ParamValue> {
+                return c.mapping.model;
+              }},
+          member_key<CoverageConfig>(
+              ParamSpec::number("p_hit", "",
+                                "the occupancy grid's probability that a cell a reading's wall "
+                                "meets is occupied (OctoMap's default)")
+                  .greater_than(0.5)
+                  .below(1.0)
+                  .defaults_to(d.mapping.p_hit),
+              &CoverageConfig::mapping, &MappingConfig::p_hit),
+          member_key<CoverageConfig>(
+              ParamSpec::number("p_miss", "",
+                                "the occupancy grid's probability that a cell a reading shows "
+                                "free is occupied (OctoMap's default)")
+                  .greater_than(0.0)
+                  .below(0.5)
+                  .defaults_to(d.mapping.p_miss),
+              &CoverageConfig::mapping, &MappingConfig::p_miss)};
 }
 
 ConfigKeys<CoverageConfig> sensor_keys() {

@@ -84,6 +84,10 @@ struct MappingConfig {
   double cells = 200;         // known-area lattice cells across Ω's box
   bool compare_known = true;  // also run with Ω known, for the cost ratio
   bool robot_maps = false;    // keep when each robot's own map held each cell
+  // "auto": the exact map of walls seen when readings are exact, else an occupancy grid;
+  // "polygons" or "occupancy" to choose.
+  std::string model = "auto";
+  double p_hit = 0.7, p_miss = 0.4;  // the occupancy grid's inverse sensor model
   bool unknown() const { return known != KnownEnvironment::full; }
   friend bool operator==(const MappingConfig&, const MappingConfig&) = default;
 };

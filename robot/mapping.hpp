@@ -15,6 +15,17 @@
 // it came to hold them, then older ones in turn, so that maps complete under loss) up to
 // mapping.max_bytes, and a robot merges those it hears. Readings are kept run-wide once; a message
 // carries their numbers and is counted at the size a robot would send them (Scan::bytes()).
+//
+// That map names the walls a reading saw, which only an exact reading can. With an uncertain
+// reading (range noise, or a localization other than exact: mapping.model "auto") a robot maps
+// on a log-odds occupancy grid (geometry/log_odds_grid.hpp) on the known-area lattice's
+// cells: each reading, its ranges noisy and placed where the robot believes it stands, adds
+// its hits and misses (geometry/grid_patch.hpp), and a message carries them as grid patches,
+// counted at their size (GridPatch::bytes()). Ω̂ is then the cells not occupied that join the
+// robots holding the map (unknown counts as free, as above; cells no robot can reach count as
+// walls), the known part of Ω's outline taken as cells too (geometry/cell_region.hpp). A fix
+// corrects where later readings are placed, not the readings placed before it: there is no
+// loop closure, and the clamped log-odds let later readings outvote earlier misplaced ones.
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -25,7 +36,9 @@
 #include "core/sim_time.hpp"
 #include "geometry/cell_integrator.hpp"
 #include "geometry/configuration_space.hpp"
+#include "geometry/grid_patch.hpp"
 #include "geometry/known_lattice.hpp"
+#include "geometry/log_odds_grid.hpp"
 #include "geometry/map_elements.hpp"
 #include "robot/coverage_config.hpp"
 #include "robot/map_exchange.hpp"
@@ -44,6 +57,14 @@ class Mapping final : public MapExchange {
   // shared: one map for every robot (the centralized controller).
   Mapping(const Environment& env, const Density& density, double radius, double range,
           const MappingConfig& config, std::size_t robots, bool shared);
+
+  // Readings are uncertain: the map is an occupancy grid. Robot i's readings get Gaussian
+  // range noise of `noise` (m) from `streams[i]` and are placed `offset(i)` from where it
+  // stands (its estimate less its position); `believed(i)` is where it believes it stands.
+  void use_grid(double noise, std::vector<RandomStream> streams,
+                std::function<Vec2(std::uint32_t)> offset,
+                std::function<Vec2(std::uint32_t)> believed);
+  bool grid() const { return grid_; }
   ~Mapping() override;
 
   // Robot i at p: its first reading (at the start).
@@ -103,6 +124,13 @@ class Mapping final : public MapExchange {
   // least-informed robot knows.
   std::size_t elements() const { return elements_.size(); }
   std::size_t elements_known_min() const;
+  // With the occupancy grid: the mean over the robots' maps of the fraction of the cells
+  // wholly in Ω held occupied, and of the cells wholly outside Ω held free (cells a wall
+  // crosses are neither); 0 with the exact map.
+  struct MapErrors {
+    double false_occupied = 0.0, false_free = 0.0;
+  };
+  MapErrors errors() const;
 
  private:
   struct RobotMap {
@@ -118,6 +146,11 @@ class Mapping final : public MapExchange {
     std::vector<bool> holds;           // per reading
     std::size_t sent = 0;              // order[0, sent) have been broadcast at least once
     std::size_t repeat = 0;            // the next of those to broadcast again
+    // The occupancy grid, and the region of it last made Ω̂ (its version).
+    std::unique_ptr<LogOddsGrid> cells;
+    mutable std::vector<std::uint8_t> region;
+    mutable std::uint64_t region_version = ~std::uint64_t{0};
+    mutable std::vector<std::uint32_t> seed_cells;
   };
   std::size_t map_of(std::uint32_t i) const { return maps_.size() == 1 ? 0 : i; }
   void take(std::uint32_t i, Vec2 p, SimTime t);
@@ -125,6 +158,14 @@ class Mapping final : public MapExchange {
   // hold it.
   bool add(std::size_t m, std::uint32_t s, SimTime t);
   std::shared_ptr<const Belief> belief_for(const std::vector<bool>& known) const;
+  // Ω̂ of map m from its occupancy grid, rebuilt when the region it makes changed.
+  const Belief& grid_belief(std::size_t m) const;
+  std::shared_ptr<const Belief> belief_of(std::unique_ptr<Environment> env) const;
+  // Where readings go: one (or its parts) of robot i at p.
+  void record(std::uint32_t i, Scan scan, GridPatch patch, SimTime t);
+  std::uint32_t bytes_of(std::uint32_t s) const {
+    return grid_ ? patches_[s].bytes() : scans_[s].bytes();
+  }
   void note_merged(SimTime t);
 
   const Environment& env_;
@@ -146,6 +187,15 @@ class Mapping final : public MapExchange {
   std::uint64_t bytes_sent_ = 0, new_bytes_sent_ = 0;
   std::function<SimTime()> now_;
   std::function<void(std::uint32_t, const Scan&)> learned_;
+  // The occupancy grid's.
+  bool grid_ = false;
+  double noise_ = 0.0;
+  std::vector<RandomStream> noise_rng_;
+  std::function<Vec2(std::uint32_t)> offset_, believed_;
+  std::vector<GridPatch> patches_;        // per reading (part)
+  std::vector<std::uint8_t> prior_open_;  // cells Ω̂ may hold: in the known outline
+  std::vector<std::uint8_t> truth_;       // per cell: 1 wholly in Ω, 2 wholly outside, 0 both
+  std::size_t truth_in_ = 0, truth_out_ = 0;
 };
 
 }  // namespace covsim

@@ -155,19 +155,27 @@ void read_components(const JsonValue& root, CoverageConfig& c) {
       const ComponentChoice choice = read_component(*loc, component_section<LocalizationEntry>());
       c.localization = LocalizationConfig{choice.type, choice.params};
       // A planner on Ω's map plans from the estimate, on Ω inflated by the estimate's
-      // error, which must stay bounded; a map of sensed walls placed by an uncertain
-      // position (SLAM) is not modelled.
+      // error, which must stay bounded. A planner on a sensed map plans in its odometry's
+      // frame, where the walls it senses stay put only if the odometry does not drift.
       const PlannerEntry* planner = planner_registry().find(c.planner.type);
       const LocalizationEntry& located = localization_registry().at(c.localization.type);
       if (c.localization.type != LocalizationConfig{}.type && planner != nullptr &&
           !planner->senses_only) {
-        if (plans_on_sensed_map(c.planner.params))
+        const bool sensed = plans_on_sensed_map(c.planner.params) ||
+                            (c.mapping.unknown() && !c.planner.params.has(kPlannerMapKey));
+        const ParamSpec* drift = find_param(located.params, "drift");
+        const double drifts = drift == nullptr ? 0.0
+                              : c.localization.params.has("drift")
+                                  ? c.localization.params.number("drift")
+                                  : std::get<double>(*drift->default_value);
+        if (sensed && drifts > 0.0)
           loc->fail(fmt::format(
-              "{} localization beside planner.map \"sensed\": a map of walls placed by an "
-              "uncertain position (SLAM) is not modelled; use planner.map \"given\" or "
-              "tangent_bug",
-              c.localization.type));
-        if (!located.bounded)
+              "{} localization with drift {} beside a planner on a sensed map: the walls it "
+              "maps move with its drifting odometry, and keeping them in place needs loop "
+              "closure (SLAM), which is not modelled; use drift 0 (tracking's default), "
+              "tangent_bug, or planner.map \"given\"",
+              c.localization.type, drifts));
+        if (!sensed && !located.bounded)
           loc->fail(fmt::format(
               "{} localization beside the map planner {}: its error grows without bound, so "
               "no inflation of the map covers it; use tracking (fixes) or tangent_bug",
@@ -409,11 +417,13 @@ void check_mapping(const JsonValue& root, CoverageConfig& c) {
         fmt::format("the {} law needs Ω's geodesic distances, which robots that do not "
                     "know Ω cannot compute",
                     c.law.type));
-  if (c.localization.type != LocalizationConfig{}.type)
-    known.fail(
-        fmt::format("a map built from readings placed by {} localization (mapping with "
-                    "an uncertain position, SLAM) is not modelled: use exact localization",
-                    c.localization.type));
+  // The polygon map names the walls a reading saw, which an uncertain reading cannot tell.
+  const bool uncertain =
+      c.localization.type != LocalizationConfig{}.type || c.sensor.noise_sigma > 0.0;
+  if (c.mapping.model == "polygons" && uncertain)
+    root.at("mapping").at("model").fail(
+        "the polygon map takes the walls each reading saw as exact, which readings with range "
+        "noise or placed by an uncertain position are not: use \"occupancy\" or \"auto\"");
   if (c.network.channel.model && kStateMessageBytes + c.mapping.max_bytes > kMaxRadioMessageBytes)
     root.at("mapping")
         .at("max_bytes")
@@ -421,10 +431,6 @@ void check_mapping(const JsonValue& root, CoverageConfig& c) {
             "a simulated radio carries messages of at most {} bytes, {} of them the state: at most "
             "{} map bytes",
             kMaxRadioMessageBytes, kStateMessageBytes, kMaxRadioMessageBytes - kStateMessageBytes));
-  if (c.sensor.noise_sigma > 0.0)
-    known.fail(
-        "a map built from noisy ranges (which walls a reading saw is then uncertain) is "
-        "not modelled: remove sensor.noise");
 }
 
 // The keys a scenario file may have at its top: the environment, the seed, and the sections.

@@ -87,6 +87,10 @@ struct CoverageOutcome {
   std::uint64_t map_bytes = 0, map_bytes_new = 0, scans = 0, obstacles = 0, obstacles_known_min = 0,
                 discoveries = 0;
   double cost_known = NAN;
+  // The map: "polygons" or "occupancy"; with the occupancy grid, the mean over the robots'
+  // maps of the fractions of cells wrong either way (Mapping::errors; NaN with polygons).
+  std::string map_model;
+  double map_false_occupied = NAN, map_false_free = NAN;
   double cost_ratio() const { return cost_real / cost_known; }
   // loops.loop1_period / loops.loop2_period; NaN for the classic schedule.
   double loop_ratio = NAN;

@@ -207,6 +207,12 @@ CoverageOutcome Simulation::outcome() const {
     out.obstacles_known_min = m->elements_known_min();
     out.obstacles = m->elements();
     out.cost_known = cost_known_;
+    out.map_model = m->grid() ? "occupancy" : "polygons";
+    if (m->grid()) {
+      const Mapping::MapErrors e = m->errors();
+      out.map_false_occupied = e.false_occupied;
+      out.map_false_free = e.false_free;
+    }
     out.discoveries = c.discoveries();
   }
   out.planner_seconds = planner_totals_.seconds;

@@ -430,6 +430,22 @@ const std::vector<Measure>& measures() {
              "(an obstacle not yet known whole: the paper's Fig. 4 without a map)",
              &O::discoveries)
           .later(),
+      member(
+          "mapping.model", K::text, "",
+          "the robots' map: polygons (the obstacles whose walls exact readings showed) or "
+          "occupancy (a log-odds occupancy grid, for uncertain readings; empty when Ω was known)",
+          &O::map_model)
+          .later(),
+      nullable("mapping.false_occupied", "",
+               "with the occupancy grid, the mean over the robots' maps of the fraction of the "
+               "cells wholly in Ω held occupied at the end (null with polygons)",
+               &O::map_false_occupied)
+          .later(),
+      nullable("mapping.false_free", "",
+               "with the occupancy grid, the mean over the robots' maps of the fraction of the "
+               "cells wholly outside Ω held free at the end (null with polygons)",
+               &O::map_false_free)
+          .later(),
       nullable(
           "mapping.cost_known", kCostUnit,
           "H of the real positions at the end of the same run with Ω known (mapping.compare_known; "

@@ -46,6 +46,25 @@ done
 /usr/bin/python3 -c "assert $(json mapped/final.json "['network']['channel_occupancy']") > \
   1.5 * $(json unmapped/final.json "['network']['channel_occupancy']")" ||
   fail "map payloads did not lengthen the frames"
+# The full stack: Ω unknown, 5 mm tracking, 1 cm range noise (an occupancy grid shared as
+# patches over the radio), bodies with ORCA on a differential drive, grid A* on the sensed map.
+for scenario in two_obstacles u_shape; do
+  "$covsim" run "$src/scenarios/$scenario.json" --set "$radio" --set environment.known=none \
+    --set robots.localization='{"type": "tracking", "noise": 0.005}' \
+    --set sensor.noise.sigma=0.01 --set sensor.range=0.5 --set robots.radius=0.02 \
+    --set robots.avoidance.type=orca --set robots.kinematics.type=differential_drive \
+    --set planner.type=grid_astar --set mapping.compare_known=false --out "full_$scenario" \
+    >/dev/null || fail "the full stack on $scenario failed"
+  f=full_$scenario/final.json
+  [ "$(json $f "['converged']")" = True ] || fail "the full stack on $scenario did not converge"
+  [ "$(json $f "['bodies']['contact_time']")" = 0.0 ] &&
+    [ "$(json $f "['bodies']['wall_contacts']")" = 0 ] ||
+    fail "the full stack on $scenario touched: $(json $f "['bodies']")"
+  [ "$(json $f "['mapping']['model']")" = occupancy ] || fail "no occupancy grid on $scenario"
+  /usr/bin/python3 -c "assert $(json $f "['mapping']['bytes']") > 0" ||
+    fail "no map patches went over the radio on $scenario"
+done
+
 set +e
 "$covsim" run "$src/scenarios/two_obstacles.json" --set "$radio" --set environment.known=none \
   --set mapping.max_bytes=4000 --out too_big >/dev/null 2>err.txt

@@ -196,8 +196,8 @@ TEST_CASE("robots.localization is checked when the scenario is read", "[localiza
   j["robots"]["localization"] = {{"type", "odometry"}, {"noise", 0.1}};
   CHECK_THROWS_WITH(covsim::test::parse_beside_paper(j, "u_shape"), Contains("noise"));
   // A planner on Ω's map plans from the estimate on the inflated map: beside fixes, which
-  // keep the error bounded, not beside odometry alone; a sensed map beside an uncertain
-  // position would be SLAM.
+  // keep the error bounded, not beside odometry alone; a sensed map in a drifting odometry's
+  // frame would need SLAM, while one whose odometry does not drift stays in place.
   for (const char* planner : {"visibility_graph", "grid_astar", "potential_field"}) {
     INFO(planner);
     j["planner"] = {{"type", planner}};
@@ -212,8 +212,15 @@ TEST_CASE("robots.localization is checked when the scenario is read", "[localiza
   }
   j["planner"] = {{"type", "grid_astar"}, {"map", "sensed"}};
   j["robots"]["localization"] = {{"type", "tracking"}};
+  CHECK_NOTHROW(covsim::test::parse_beside_paper(j, "u_shape"));
+  j["robots"]["localization"] = {{"type", "tracking"}, {"drift", 0.01}};
   CHECK_THROWS_WITH(covsim::test::parse_beside_paper(j, "u_shape"),
                     Contains("$.robots.localization") && Contains("SLAM"));
+  j["robots"]["localization"] = {{"type", "odometry"}};  // drifts by default
+  CHECK_THROWS_WITH(covsim::test::parse_beside_paper(j, "u_shape"),
+                    Contains("$.robots.localization") && Contains("SLAM"));
+  j["robots"]["localization"] = {{"type", "odometry"}, {"drift", 0}};
+  CHECK_NOTHROW(covsim::test::parse_beside_paper(j, "u_shape"));
   // An inflation that leaves no free space is named.
   j["planner"] = {{"type", "grid_astar"}};
   j["robots"]["localization"] = {{"type", "tracking"}, {"noise", 0.1}};

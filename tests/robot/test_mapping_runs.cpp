@@ -184,8 +184,20 @@ TEST_CASE("what robots that do not know Ω cannot be told is refused", "[mapping
              Contains("$.environment.known") && Contains("tangent_bug"));
   CHECK_THAT(error("controller", {{"projection", "known"}}), Contains("discover"));
   CHECK_THAT(error("controller", {{"type", "geodesic_lloyd"}}), Contains("geodesic"));
-  CHECK_THAT(error("robots.localization", {{"type", "tracking"}}), Contains("exact localization"));
-  CHECK_THAT(error("sensor", {{"noise", {{"sigma", 0.01}}}}), Contains("noisy"));
+  // Uncertain readings make an occupancy grid; the polygon map needs exact ones.
+  CHECK(error("robots.localization", {{"type", "tracking"}}) == "no error");
+  CHECK(error("robots.localization", {{"type", "odometry"}}) == "no error");
+  CHECK(error("sensor", {{"noise", {{"sigma", 0.01}}}}) == "no error");
+  CHECK(error("mapping", {{"model", "polygons"}}) == "no error");
+  const auto noisy_polygons = [] {
+    nlohmann::json j = paper("u_shape.json").json;
+    j["environment"]["known"] = "none";
+    j["sensor"]["noise"] = {{"sigma", 0.01}};
+    j["mapping"] = {{"model", "polygons"}};
+    return j;
+  }();
+  CHECK_THROWS_WITH(covsim::test::parse_beside_paper(noisy_polygons, "u_shape.json"),
+                    Contains("$.mapping.model") && Contains("occupancy"));
   CHECK_THAT(error("mapping", {{"max_bytes", 10}}), Contains("$.mapping.max_bytes"));
   CHECK(error("mapping", {{"spacing", 0.2}}) == "no error");
   // Mapping settings without mapping would be ignored; their defaults may be stated.
@@ -369,4 +381,60 @@ TEST_CASE("decentralized, a map planner takes the walls of the readings its robo
       CHECK(static_cast<double>(held) >= 0.99 * static_cast<double>(pieces));
     }
   }
+}
+
+TEST_CASE("uncertain readings map on a log-odds occupancy grid", "[mapping][coverage]") {
+  const nlohmann::json tracking{{"type", "tracking"}, {"noise", 0.005}};
+  const nlohmann::json noise{{"sigma", 0.01}};
+  for (const char* name : {"two_obstacles.json", "u_shape.json"}) {
+    INFO(name);
+    // Noisy ranges placed by a tracked estimate: the grid, near the known run's cost, with few
+    // cells wrong.
+    nlohmann::json j = paper(name).json;
+    j["environment"]["known"] = "none";
+    j["robots"]["localization"] = tracking;
+    j["sensor"]["noise"] = noise;
+    const CoverageOutcome out = Simulation(covsim::test::parse_beside_paper(j, name)).run();
+    CHECK(out.converged);
+    CHECK(out.map_model == "occupancy");
+    CHECK(out.cost_ratio() == Approx(1.0).epsilon(0.03));
+    CHECK(out.map_false_occupied < 0.01);
+    CHECK(out.map_false_free < 0.1);
+    CHECK(out.known_fraction > 0.9);
+    // Exact readings keep the polygon map; on the grid they mark no cell wrong.
+    j = paper(name).json;
+    j["environment"]["known"] = "none";
+    const Scenario exact = covsim::test::parse_beside_paper(j, name);
+    CHECK(Simulation(exact).run().map_model == "polygons");
+    j["mapping"] = {{"model", "occupancy"}};
+    const CoverageOutcome grid = Simulation(covsim::test::parse_beside_paper(j, name)).run();
+    CHECK(grid.converged);
+    CHECK(grid.map_model == "occupancy");
+    CHECK(grid.map_false_occupied == 0.0);
+    CHECK(grid.map_false_free == 0.0);
+    CHECK(grid.cost_ratio() == Approx(1.0).epsilon(0.03));
+  }
+}
+
+TEST_CASE("decentralized, the occupancy grids are shared as patches within a message's bytes",
+          "[mapping][network]") {
+  nlohmann::json j = paper("two_obstacles.json").json;
+  j["environment"]["known"] = "none";
+  j["sensor"]["noise"] = {{"sigma", 0.01}};
+  j["sensor"]["range"] = 0.5;
+  j["network"] = {{"loss", {{"model", "bernoulli"}, {"p", 0.3}}}};
+  j["mapping"] = {{"max_bytes", 300}, {"compare_known", false}};
+  const Scenario s = covsim::test::parse_beside_paper(j, "two_obstacles.json");
+  Simulation a(s), b(s);
+  const CoverageOutcome out = a.run();
+  CHECK(out.converged);
+  CHECK(out.map_model == "occupancy");
+  CHECK(out.map_bytes > 0);
+  CHECK(out.known_fraction_min > 0.5);
+  CHECK(b.run().fingerprint == out.fingerprint);
+  const Mapping& m = *a.controller().mapping();
+  REQUIRE(m.grid());
+  // Every reading was cut into patches that fit one message.
+  CHECK(m.scans().size() > 0);
+  CHECK(m.disagreement() >= 0.0);
 }

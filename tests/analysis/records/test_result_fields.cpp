@@ -98,6 +98,9 @@ RunMeasures known_run() {
   o.obstacles_known_min = 2;
   o.discoveries = 5;
   o.cost_known = 0.096;
+  o.map_model = "occupancy";
+  o.map_false_occupied = 0.0025;
+  o.map_false_free = 0.015625;
   o.loop_ratio = 10.0;
   o.planner_steps = 200;
   o.planner_seconds = 0.0005;  // 2.5 µs a step
@@ -137,7 +140,8 @@ const ojson kKnownFinal = ojson::parse(R"({
   "mapping": {"known": "none", "known_fraction": 0.875, "known_fraction_min": 0.75,
               "time_to_90_percent": 10.5, "time_to_100_percent": null,
               "disagreement": 0.0625, "bytes": 4096, "bytes_new": 1024, "scans": 55, "obstacles": 3,
-              "obstacles_known_min": 2, "discoveries": 5, "cost_known": 0.096,
+              "obstacles_known_min": 2, "discoveries": 5, "model": "occupancy",
+              "false_occupied": 0.0025, "false_free": 0.015625, "cost_known": 0.096,
               "cost_ratio": 1.25},
   "loops": {"ratio": 10.0},
   "planner": {"steps": 200, "step_time_us": 2.5},
