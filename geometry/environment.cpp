@@ -22,6 +22,17 @@ Environment::Environment(std::vector<Vec2> outer, std::vector<std::vector<Vec2>>
   area_ = signed_area(rings_[0]);
   for (std::size_t h = 1; h < rings_.size(); ++h)
     area_ += signed_area(rings_[h]);  // negative
+  // A ring thinner than the tolerance (its area over its perimeter, a rectangle's half
+  // width) has no inside a triangulation can keep: an offset's sliver, say.
+  for (std::size_t r = 0; r < rings_.size(); ++r) {
+    double perimeter = 0.0;
+    for (std::size_t i = 0; i < rings_[r].size(); ++i)
+      perimeter += distance(rings_[r][i], rings_[r][(i + 1) % rings_[r].size()]);
+    if (!(std::abs(signed_area(rings_[r])) > tolerance_ * perimeter))
+      throw GeometryError(
+          fmt::format("{}: thinner than the tolerance ({} m)", ring_name(r), tolerance_),
+          static_cast<int>(r));
+  }
 
   mesh_ = triangulate_free_space(rings_);
 

@@ -1,6 +1,6 @@
 """Runs the Python tests and examples for ctest, with the reason when they cannot run here.
 
-    ctest_runner.py pytest TESTS_DIR
+    ctest_runner.py pytest TESTS_DIR_OR_FILE [PYTEST_ARGS...]
     ctest_runner.py example SCRIPT OUT_DIR FIGURE [ARGS...]
     ctest_runner.py pip SOURCE_DIR BUILD_DIR
 
@@ -38,7 +38,7 @@ def main(argv):
         skip_unless(["numpy", "pytest", "pandas"])
         import pytest
 
-        return pytest.main(["-q", "-p", "no:cacheprovider", argv[1]])
+        return pytest.main(["-q", "-p", "no:cacheprovider", *argv[1:]])
     if argv[0] == "example":
         script, out, figure, rest = argv[1], argv[2], argv[3], argv[4:]
         skip_unless(["numpy", "matplotlib", "pandas"])
