@@ -194,13 +194,18 @@ void CoverageController::loop1(std::uint32_t i) {
                           [&] { return law_->at_rest(r, tol_); });
   if (r.stable) return;
   // A robot that stopped at its goal by its estimate, and finds by a later fix that it is not
-  // there, is handed its goal again: the projection of the target it was set for, for a
-  // virtual target it has already found unreachable.
+  // at its target, is handed its target as it is now (the projection, for a virtual target it
+  // has already found unreachable): handed the goal it was set for, it would go back there
+  // for ever when the target has since moved by less than the tolerance but the fixes keep it
+  // farther than it can tell (office, 5 mm tracking: robot 0 re-handed a goal 4.2 cm from its
+  // target, and never within 5 cm of the target).
   if (belief_->localization() && !at_target &&
       (r.status == PlanStatus::reached || r.status == PlanStatus::projected) &&
-      distance(r.virtual_target, r.assigned) <= tol_.position)
-    planning_->set_goal(
-        r, r.status == PlanStatus::projected ? space.closest_point(r.assigned) : r.goal);
+      distance(r.virtual_target, r.assigned) <= tol_.position) {
+    planning_->set_goal(r, r.status == PlanStatus::projected ? space.closest_point(r.virtual_target)
+                                                             : planner_goal(r));
+    r.assigned = r.virtual_target;
+  }
   // Only a target that moved (by more than the position tolerance) restarts the planner: a
   // goal it reached, found unreachable or gave up on is never handed to it again (it would
   // only do the same again), and periodic updates cannot keep restarting a robot on its way
