@@ -21,7 +21,9 @@ DeadReckoning::DeadReckoning(const LocalizationContext& context, DeadReckoningCo
                               Vec2{},
                               {},
                               kernel_.stream(i, "localization-fix"),
-                              kernel_.stream(i, "localization-drift")});
+                              kernel_.stream(i, "localization-drift"),
+                              kernel_.stream(i, "localization-loss"),
+                              context.starts[i]});
   }
   if (config_.rate)
     frame_kind_ = kernel_.add_kind("tracking_frame", [this](Kernel&, const Event&) { frame(); });
@@ -38,6 +40,7 @@ void DeadReckoning::frame() {
   const SimTime delivered = kernel_.now() + config_.latency;
   for (std::uint32_t i = 0; i < robots_.size(); ++i) {
     Tracked& t = robots_[i];
+    if (config_.loss > 0.0 && t.loss_rng.bernoulli(config_.loss)) continue;  // marker not found
     Vec2 fix = position_(i);
     if (config_.noise > 0.0)
       fix = fix + Vec2{t.fix_rng.normal(0.0, config_.noise), t.fix_rng.normal(0.0, config_.noise)};
@@ -63,19 +66,33 @@ void DeadReckoning::moved(std::uint32_t i, Vec2 d) {
   t.odometry = t.odometry + e;
 }
 
-Vec2 DeadReckoning::estimate(std::uint32_t i) {
+void DeadReckoning::deliver(std::uint32_t i) const {
   Tracked& t = robots_[i];
   // The latest fix delivered by now: where the robot was at its capture (compensated) or is now.
   while (!t.pending.empty() && t.pending.front().delivered <= kernel_.now()) {
     const Fix& f = t.pending.front();
     t.correction = f.position - (config_.compensated ? f.odometry : t.odometry);
+    t.last_fix = f.position;
     t.pending.pop_front();
     ++fixes_;
   }
-  return t.odometry + t.correction;
+}
+
+Vec2 DeadReckoning::odometry(std::uint32_t i) const {
+  if (config_.odometry) return robots_[i].odometry;
+  deliver(i);
+  return robots_[i].last_fix;
+}
+
+Vec2 DeadReckoning::estimate(std::uint32_t i) {
+  deliver(i);
+  const Tracked& t = robots_[i];
+  return config_.odometry ? t.odometry + t.correction : t.last_fix;
 }
 
 double DeadReckoning::odometry_jitter(double step) const {
+  // Without odometry the planner's frame is the last fix: it jumps by a fix's noise.
+  if (!config_.odometry) return std::sqrt(2.0) * config_.noise;
   return config_.drift * std::sqrt(step);
 }
 
@@ -86,6 +103,8 @@ std::optional<double> DeadReckoning::estimate_sigma(double speed) const {
     if (config_.drift > 0.0) return std::nullopt;
     return 0.0;
   }
+  if (!config_.odometry)  // the last fix: up to a frame period and the latency old
+    return config_.noise + speed * (config_.latency.seconds() + 1.0 / *config_.rate);
   const double between = config_.drift * config_.drift * speed / *config_.rate;
   const double lag = config_.compensated ? 0.0 : speed * config_.latency.seconds();
   return std::sqrt(config_.noise * config_.noise + between) + lag;
@@ -93,6 +112,7 @@ std::optional<double> DeadReckoning::estimate_sigma(double speed) const {
 
 double DeadReckoning::estimate_jitter(double step) const {
   // A fix replaces one error by another, independent one; odometry adds drift over the step.
+  if (!config_.odometry) return std::sqrt(2.0) * config_.noise;
   const double fix = config_.rate ? 2.0 * config_.noise * config_.noise : 0.0;
   return std::sqrt(fix + config_.drift * config_.drift * step);
 }

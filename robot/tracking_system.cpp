@@ -28,6 +28,17 @@ LocalizationEntry tracking_system_entry() {
                          "robot's estimate lags by its speed times the latency, and up to a "
                          "loop-2 period more)")
           .defaults_to(true),
+      ParamSpec::number("loss", "",
+                        "probability that a frame misses a robot's marker (no fix for it that "
+                        "frame)")
+          .probability()
+          .defaults_to(0.0),
+      ParamSpec::boolean("remote",
+                         "a host that sees the robots only through the camera and remote-controls "
+                         "them, as the paper's experiment ran: no odometry, the estimate (and "
+                         "the planner's frame) is the last fix (false: the robot's odometry "
+                         "between fixes)")
+          .defaults_to(false),
       drift_parameter(0.0)};
   e.make = [](const LocalizationContext& c, const Params& p) -> std::unique_ptr<Localization> {
     DeadReckoningConfig d;
@@ -36,6 +47,8 @@ LocalizationEntry tracking_system_entry() {
     d.noise = p.number("noise");
     d.drift = p.number("drift");
     d.compensated = p.boolean("compensated");
+    d.loss = p.number("loss");
+    d.odometry = !p.boolean("remote");
     return std::make_unique<DeadReckoning>(c, d);
   };
   return e;

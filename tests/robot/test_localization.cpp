@@ -189,3 +189,45 @@ TEST_CASE("the same seed gives the same estimates", "[localization]") {
   CHECK(sample(21) == sample(21));
   CHECK_FALSE(sample(21) == sample(22));
 }
+
+TEST_CASE("a remote-controlled robot's estimate is the last fix; a frame may miss its marker",
+          "[localization]") {
+  const double speed = 0.1, latency = 0.2, dt = 0.01;
+  World w(5, 2, "tracking",
+          params({{"rate", 10.0}, {"latency", latency}, {"noise", 0.0}, {"remote", true}}));
+  // Robot 0 moves along x; the estimate stays at the last fix between fixes (no odometry),
+  // which is where the robot was at the capture, latency before it arrived.
+  double worst = 0.0, settled = 0.0;
+  const EventKind step = w.kernel.add_kind("step", [&](Kernel& k, const Event&) {
+    w.move(0, {speed * dt, 0.0});
+    const double error = distance(w.loc->estimate(0), w.real[0]);
+    worst = std::max(worst, error);
+    if (k.now() > SimTime::from_seconds(latency + 0.1)) settled = std::max(settled, error);
+    CHECK(w.loc->odometry(0) == w.loc->estimate(0));  // the planner works from the fix
+  });
+  w.kernel.schedule_periodic(Period::from_seconds(dt), SimTime::from_seconds(dt), step, 0,
+                             event_class::loop2);
+  w.loc->start(SimTime::zero());
+  w.kernel.run_until(SimTime::from_seconds(3.0));
+  // Up to a frame period of motion more than the latency's.
+  CHECK(settled > speed * latency);
+  CHECK(worst <= speed * (latency + 0.1) * (1 + 1e-9) + 1e-12);
+  CHECK(w.loc->estimate_sigma(speed).value() == Approx(speed * (latency + 0.1)));
+  CHECK(w.loc->fixes() == 29);  // robot 0's: a fix counts when it is applied
+
+  // Markers lost in about a fifth of the frames: fewer fixes, the same for the same seed.
+  const auto fixes = [](double loss, std::uint64_t seed) {
+    World l(seed, 4, "tracking", params({{"rate", 10.0}, {"loss", loss}}));
+    l.loc->start(SimTime::zero());
+    l.kernel.run_until(SimTime::from_seconds(10.0));
+    for (std::uint32_t i = 0; i < 4; ++i)
+      l.loc->estimate(i);
+    return l.loc->fixes();
+  };
+  CHECK(fixes(0.0, 3) == 4 * 101);
+  const std::uint64_t lossy = fixes(0.2, 3);
+  CHECK(lossy == fixes(0.2, 3));
+  CHECK(lossy > 4 * 101 * 0.7);
+  CHECK(lossy < 4 * 101 * 0.9);
+  CHECK(fixes(1.0, 3) == 0);
+}
