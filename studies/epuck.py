@@ -61,6 +61,17 @@ SETTINGS += [("tracking noise [m]", str(n),
              [0.0, 0.002, 0.005, 0.01, 0.02]]
 SETTINGS += [("tracking rate [Hz]", str(f),
               {"robots.localization": {**TRACKING, "rate": f}}) for f in [1, 2, 5, 10, 30]]
+# The paper's host loop (its Section VI): no odometry on the robots, the host plans each
+# robot's next step from the camera's last fix and sends it over Bluetooth, one step per
+# frame; the latency (0.1 s) counts the camera's and the radio's together. The frame rate is
+# not in the paper: swept. Marker loss: one of the paper's seven runs failed when the
+# tracker lost a marker; how often a frame missed one is not given (5% and 20% here).
+REMOTE = {**TRACKING, "remote": True}
+SETTINGS += [("host loop, one step per frame", f"{f} Hz",
+              {"robots.localization": {**REMOTE, "rate": f}, "loops.loop2_period": 1.0 / f})
+             for f in [1, 2, 5, 10]]
+SETTINGS += [("host loop, one step per frame", f"10 Hz, markers lost in {round(100 * p)}% of frames",
+              {"robots.localization": {**REMOTE, "loss": p}}) for p in [0.05, 0.2]]
 # Where robots exchange places with each other (docs/studies.md): placed exactly, and with
 # loop 1 run every second rather than when the robot has settled.
 SETTINGS += [("mechanism", "nominal starts (no hand placement)", {"nominal": True}),
