@@ -72,6 +72,10 @@ struct PlannerEntry : ComponentInfo {
   // the robots do not know Ω. A planner on Ω's map works in Ω's frame from the estimate, on
   // the map inflated by its error (robot/belief_layer).
   bool senses_only = false;
+  // It plans nothing, from Ω or its readings: straight at the goal, stopped where the body
+  // meets a wall (straight_line, none). It needs no map, so it runs where the robots do not
+  // know Ω (it meets the walls they have not mapped as it meets the others).
+  bool blind = false;
   // It takes the walls of the readings its robot hears from neighbours (Planner::learn) when
   // robots that do not know Ω share their maps decentralized (a map planner on a sensed map
   // does, whatever this says).

@@ -28,6 +28,7 @@ PlannerEntry straight_line_entry() {
   PlannerEntry e;
   e.name = "straight_line";
   e.description = "straight at the target; stops at the first wall (contact only)";
+  e.blind = true;
   e.make = [](const PlannerContext& ctx, const Params&) -> PlannerSource {
     const Environment* env = &ctx.environment;
     return [env] { return std::make_unique<StraightLine>(*env); };
@@ -41,6 +42,7 @@ PlannerEntry no_planner_entry() {
   e.description =
       "no planner: straight at the target through whatever is in the way (the paper's "
       "Section II baselines); a motion that leaves Ω ends the run";
+  e.blind = true;
   e.make = [](const PlannerContext& ctx, const Params&) -> PlannerSource {
     const Environment* env = &ctx.environment;
     return [env] { return std::make_unique<StraightLine>(*env, false); };

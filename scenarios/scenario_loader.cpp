@@ -392,7 +392,7 @@ void check_mapping(const JsonValue& root, CoverageConfig& c) {
   }
   const JsonValue known = root.at("environment").at("known");
   const PlannerEntry* planner = planner_registry().find(c.planner.type);
-  if (planner != nullptr && !planner->senses_only) {
+  if (planner != nullptr && !planner->senses_only && !planner->blind) {
     // A map planner plans on what its robot sensed: implied, and the given map refused.
     if (find_param(planner->params, kPlannerMapKey) == nullptr)
       known.fail(

@@ -28,7 +28,7 @@ LAYERS = {
     "localization": ["exact", "tracking", "odometry"],
     "noise": ["off", "on"],
     "planner": ["tangent_bug", "visibility_graph", "grid_astar", "potential_field",
-                "straight_line", "py_feeler"],
+                "straight_line", "py_sensing"],
     "bodies": ["none", "orca"],
     "kinematics": ["single_integrator", "unicycle", "differential_drive"],
     "law": ["virtual_generators", "euclidean_lloyd", "geodesic_lloyd"],
@@ -36,7 +36,7 @@ LAYERS = {
 }
 # Planners documented as incomplete (docs/planners.md): they may stall short of a target
 # for good, and the run then stops as stuck.
-INCOMPLETE = {"potential_field", "straight_line", "py_feeler"}
+INCOMPLETE = {"potential_field", "straight_line", "py_sensing"}
 RADIUS = 0.02
 
 
@@ -160,8 +160,8 @@ class Feeler:
         return nxt, "moving"
 
 
-if "py_feeler" not in [p["name"] for p in covsim.components("planners")]:
-    covsim.register_planner("py_feeler", Feeler, "straight, on what it senses", senses=True)
+if "py_sensing" not in [p["name"] for p in covsim.components("planners")]:
+    covsim.register_planner("py_sensing", Feeler, "straight, on what it senses", senses=True)
 
 
 def wall_distances(points, rings):
@@ -197,7 +197,7 @@ def refused(message):
     f"{k}-{name}-" + "-".join(row.values()) for k, (row, name) in enumerate(CASES)])
 def test_every_layer_composes(row, name, tmp_path):
     s = scenario_of(row, name)
-    if row["planner"] == "py_feeler":
+    if row["planner"] == "py_sensing":
         try:
             scenario = covsim.Scenario.from_dict(s)
         except covsim.ScenarioError as e:
