@@ -120,6 +120,15 @@ void BM_ScaleRunMappingDecentralized(benchmark::State& state) {
   run(state, parse(json));
 }
 
+// The same on an occupancy grid (mapping.model occupancy, exact readings): the patches on the
+// lattice, the log-odds, and the belief traced from the grid's cells when a cell changes
+// state, beside BM_ScaleRunMapping's polygons.
+void BM_ScaleRunMappingOccupancy(benchmark::State& state) {
+  nlohmann::ordered_json json = mapping(static_cast<std::size_t>(state.range(0)));
+  json["mapping"]["model"] = "occupancy";
+  run(state, parse(json));
+}
+
 // BM_ScaleRun with the same 1 m range: the baseline of the mapping runs.
 void BM_ScaleRunRange(benchmark::State& state) {
   nlohmann::ordered_json json = scale_json(static_cast<std::size_t>(state.range(0)));
@@ -157,6 +166,7 @@ BENCHMARK(BM_ScaleRunAvoidance)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark
 BENCHMARK(BM_ScaleRunTracking)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunRange)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunMapping)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScaleRunMappingOccupancy)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunRangeDecentralized)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScaleRunMappingDecentralized)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DelaunayPerTick)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
