@@ -94,25 +94,85 @@ std::vector<std::uint8_t> seeded_region(const CellGrid& g, const std::vector<std
   }
 }
 
+namespace {
+
+// The region's 4-connected parts: a label per cell (0: outside) and each label's size.
+std::vector<std::size_t> label_parts(const CellGrid& g, const std::vector<std::uint8_t>& region,
+                                     std::vector<std::uint32_t>& label) {
+  label.assign(g.size(), 0);
+  std::vector<std::size_t> sizes{0};
+  for (std::uint32_t c = 0; c < g.size(); ++c) {
+    if (region[c] == 0 || label[c] != 0) continue;
+    const auto next = static_cast<std::uint32_t>(sizes.size());
+    const std::vector<std::uint8_t> part = flood(g, region, {c});
+    std::size_t size = 0;
+    for (std::uint32_t k = 0; k < g.size(); ++k)
+      if (part[k] != 0) label[k] = next, ++size;
+    sizes.push_back(size);
+  }
+  return sizes;
+}
+
+std::unique_ptr<Environment> trace(const CellGrid& g, const std::vector<std::uint32_t>& label,
+                                   std::uint32_t best_label);
+
+}  // namespace
+
 std::unique_ptr<Environment> region_environment(const CellGrid& g,
                                                 const std::vector<std::uint8_t>& region) {
   // The largest 4-connected part (the first in row order among equals).
-  std::vector<std::uint32_t> label(g.size(), 0);
+  std::vector<std::uint32_t> label;
+  const std::vector<std::size_t> sizes = label_parts(g, region, label);
   std::uint32_t best_label = 0;
-  std::size_t best_size = 0;
-  {
-    std::uint32_t next = 0;
-    for (std::uint32_t c = 0; c < g.size(); ++c) {
-      if (region[c] == 0 || label[c] != 0) continue;
-      ++next;
-      const std::vector<std::uint8_t> part = flood(g, region, {c});
-      std::size_t size = 0;
-      for (std::uint32_t k = 0; k < g.size(); ++k)
-        if (part[k] != 0) label[k] = next, ++size;
-      if (size > best_size) best_size = size, best_label = next;
+  for (std::uint32_t k = 1; k < sizes.size(); ++k)
+    if (sizes[k] > sizes[best_label]) best_label = k;
+  if (best_label == 0) throw GeometryError("a region of cells needs at least one cell");
+  return trace(g, label, best_label);
+}
+
+std::vector<std::unique_ptr<const Environment>> eroded_parts(
+    const CellGrid& g, const std::vector<std::uint8_t>& region, double radius) {
+  // A cell goes when a cell outside lies nearer than the radius, square to square.
+  std::vector<std::uint8_t> kept = region;
+  const auto reach = static_cast<std::int32_t>(std::ceil(radius / g.cell)) + 1;
+  const auto outside = [&](std::int32_t i, std::int32_t j) {
+    return i < 0 || j < 0 || i >= g.nx || j >= g.ny || region[g.index(i, j)] == 0;
+  };
+  for (std::int32_t j = -1; j <= g.ny; ++j)
+    for (std::int32_t i = -1; i <= g.nx; ++i) {
+      if (!outside(i, j)) continue;
+      for (std::int32_t v = std::max(0, j - reach); v <= std::min(g.ny - 1, j + reach); ++v)
+        for (std::int32_t u = std::max(0, i - reach); u <= std::min(g.nx - 1, i + reach); ++u) {
+          const double dx = std::max(0, std::abs(u - i) - 1) * g.cell,
+                       dy = std::max(0, std::abs(v - j) - 1) * g.cell;
+          if (dx * dx + dy * dy < radius * radius) kept[g.index(u, v)] = 0;
+        }
     }
-  }
-  if (best_size == 0) throw GeometryError("a region of cells needs at least one cell");
+  // Every kept cell seeds: all parts stay, parted where they meet at a corner.
+  std::vector<Vec2> seeds;
+  for (std::int32_t j = 0; j < g.ny; ++j)
+    for (std::int32_t i = 0; i < g.nx; ++i)
+      if (kept[g.index(i, j)] != 0)
+        seeds.push_back({g.origin.x + (i + 0.5) * g.cell, g.origin.y + (j + 0.5) * g.cell});
+  std::vector<std::unique_ptr<const Environment>> out;
+  if (seeds.empty()) return out;
+  const std::vector<std::uint8_t> parted = seeded_region(g, kept, seeds);
+  std::vector<std::uint32_t> label;
+  const std::vector<std::size_t> sizes = label_parts(g, parted, label);
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t k = 1; k < sizes.size(); ++k)
+    order.push_back(k);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return sizes[a] > sizes[b]; });
+  for (const std::uint32_t k : order)
+    out.push_back(trace(g, label, k));
+  return out;
+}
+
+namespace {
+
+std::unique_ptr<Environment> trace(const CellGrid& g, const std::vector<std::uint32_t>& label,
+                                   std::uint32_t best_label) {
   const auto in = [&](std::int32_t i, std::int32_t j) {
     return i >= 0 && j >= 0 && i < g.nx && j < g.ny && label[g.index(i, j)] == best_label;
   };
@@ -166,5 +226,7 @@ std::unique_ptr<Environment> region_environment(const CellGrid& g,
   }
   return std::make_unique<Environment>(std::move(outer), std::move(holes));
 }
+
+}  // namespace
 
 }  // namespace covsim

@@ -38,4 +38,11 @@ std::vector<std::uint8_t> seeded_region(const CellGrid& grid, const std::vector<
 std::unique_ptr<Environment> region_environment(const CellGrid& grid,
                                                 const std::vector<std::uint8_t>& region);
 
+// The region's cells whose closed square lies at least `radius` from every cell outside it
+// (and from the grid's edge): a union of cells inside the region shrunk by the radius, each
+// 4-connected part as an environment (parted where cells meet only at a corner), largest
+// first. Empty if none is left.
+std::vector<std::unique_ptr<const Environment>> eroded_parts(
+    const CellGrid& grid, const std::vector<std::uint8_t>& region, double radius);
+
 }  // namespace covsim

@@ -28,6 +28,13 @@ ConfigurationSpace::ConfigurationSpace(const Environment& env, double radius)
         radius, radius));
 }
 
+ConfigurationSpace::ConfigurationSpace(const Environment& env, double radius,
+                                       std::vector<std::unique_ptr<const Environment>> parts)
+    : env_(&env), radius_(radius), parts_(std::move(parts)) {
+  if (parts_.empty())
+    throw GeometryError(fmt::format("a robot of radius {} m fits nowhere", radius));
+}
+
 std::optional<std::size_t> ConfigurationSpace::part_of(Vec2 p) const {
   if (parts_.empty()) return env_->contains(p) ? std::optional<std::size_t>(0) : std::nullopt;
   for (std::size_t k = 0; k < parts_.size(); ++k) {

@@ -16,6 +16,10 @@ class ConfigurationSpace {
   // radius 0: Ω (referenced, not copied). Throws GeometryError if no point of Ω is r from
   // its boundary, or r is negative or not finite. `env` must outlive this.
   ConfigurationSpace(const Environment& env, double radius);
+  // Ω ⊖ r given as its parts, found otherwise (an occupancy grid's cells eroded by r, say).
+  // Throws GeometryError if there are none.
+  ConfigurationSpace(const Environment& env, double radius,
+                     std::vector<std::unique_ptr<const Environment>> parts);
 
   double radius() const { return radius_; }
   const Environment& environment() const { return *env_; }

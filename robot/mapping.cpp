@@ -105,11 +105,16 @@ std::shared_ptr<const Belief> Mapping::belief_for(const std::vector<bool>& known
   return beliefs_.emplace(known, std::move(b)).first->second;
 }
 
-std::shared_ptr<const Belief> Mapping::belief_of(std::unique_ptr<Environment> env) const {
+std::shared_ptr<const Belief> Mapping::grid_belief_of(
+    const CellGrid& grid, const std::vector<std::uint8_t>& region) const {
   auto b = std::make_shared<Belief>();
-  b->environment = std::move(env);
+  b->environment = region_environment(grid, region);
   b->integrator = std::make_unique<CellIntegrator>(*b->environment, density_);
-  b->space = std::make_unique<ConfigurationSpace>(*b->environment, radius_);
+  // Shrunk by the radius on the cells themselves: an offset of a staircase outline is many
+  // coincident events for a straight skeleton (one crashed, dead_ends with 2 cm tracking).
+  b->space = radius_ > 0.0 ? std::make_unique<ConfigurationSpace>(
+                                 *b->environment, radius_, eroded_parts(grid, region, radius_))
+                           : std::make_unique<ConfigurationSpace>(*b->environment, 0.0);
   return b;
 }
 
@@ -134,7 +139,7 @@ const Belief& Mapping::grid_belief(std::size_t index) const {
   std::vector<std::uint8_t> region = seeded_region(g, open, seeds);
   if (region == m.region && m.belief) return *m.belief;
   try {
-    m.belief = belief_of(region_environment(g, region));
+    m.belief = grid_belief_of(g, region);
     m.region = std::move(region);
   } catch (const std::invalid_argument&) {
     // No region, or one that leaves the robots' bodies no room: the last belief stands.

@@ -160,7 +160,9 @@ class Mapping final : public MapExchange {
   std::shared_ptr<const Belief> belief_for(const std::vector<bool>& known) const;
   // Ω̂ of map m from its occupancy grid, rebuilt when the region it makes changed.
   const Belief& grid_belief(std::size_t m) const;
-  std::shared_ptr<const Belief> belief_of(std::unique_ptr<Environment> env) const;
+  // Ω̂ from a region of the grid's cells, shrunk by the radius on the cells.
+  std::shared_ptr<const Belief> grid_belief_of(const CellGrid& grid,
+                                               const std::vector<std::uint8_t>& region) const;
   // Where readings go: one (or its parts) of robot i at p.
   void record(std::uint32_t i, Scan scan, GridPatch patch, SimTime t);
   std::uint32_t bytes_of(std::uint32_t s) const {

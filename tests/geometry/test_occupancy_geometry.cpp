@@ -201,3 +201,26 @@ TEST_CASE("the cells joined to the robots become an environment of their outline
     CHECK_THROWS(region_environment(g, closed));
   }
 }
+
+TEST_CASE("a region of cells shrunk by a radius keeps the cells a body there clears",
+          "[geometry][mapping]") {
+  const CellGrid g{{1.0, 2.0}, 0.25, 12, 10};
+  const std::vector<std::uint8_t> open(g.size(), 1);
+  // The grid's edge is the outside: cells at least 0.3 m from it, square to square.
+  const auto parts = eroded_parts(g, open, 0.3);
+  REQUIRE(parts.size() == 1);
+  CHECK(parts[0]->area() == Approx(8 * 6 * 0.0625));
+  for (const Vec2 v : parts[0]->outer()) {
+    CHECK(v.x - 1.0 >= 0.3);
+    CHECK(1.0 + 12 * 0.25 - v.x >= 0.3);
+  }
+  // A closed wall across with a door one cell wide: no body of radius 0.2 passes it, so the
+  // two rooms are two parts, the larger first; at 1 m nothing is left.
+  std::vector<std::uint8_t> walled = open;
+  for (int j = 0; j < 10; ++j)
+    if (j != 5) walled[g.index(7, j)] = 0;
+  const auto rooms = eroded_parts(g, walled, 0.2);
+  REQUIRE(rooms.size() == 2);
+  CHECK(rooms[0]->area() > rooms[1]->area());
+  CHECK(eroded_parts(g, walled, 1.0).empty());
+}
