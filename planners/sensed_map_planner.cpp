@@ -246,7 +246,11 @@ PlanStep SensedMapPlanner::step(const SensorReading& r, double max_step) {
     // On a noisy map the end may lie behind the wall that stopped the robot, within the noise.
     // (Unless the touch that stopped it shows the end behind that wall: it plans round.)
     return start_settling(r, max_step);
-  } else if (!planned_ || stopped || (changed && (nearer_wall() || !ahead_clear(x, first_new)))) {
+  } else if (!planned_ || stopped ||
+             (map_->spread() == 0.0 && distance(x, proposed_from_) <= tol_) ||
+             (changed && (nearer_wall() || !ahead_clear(x, first_new)))) {
+    // Held where it stood on an exact map: moved off its path (a detour round a neighbour),
+    // the rest of the path's leg from here meets a wall; a path from here does not.
     replan(x);
   }
   // A noisy map may show no way out of where the robot stands (walls seen a little too near,
