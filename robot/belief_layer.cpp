@@ -39,8 +39,7 @@ BeliefLayer::BeliefLayer(Kernel& kernel, const Environment& env, const Density& 
                                   starts.size(), config.network.channel.is_ideal());
     mapping_->set_clock([&kernel] { return kernel.now(); });
     // Uncertain readings (noisy ranges, placed by an estimate) make an occupancy grid.
-    const bool uncertain = localization_ || config.sensor.noise_sigma > 0.0;
-    if (config.mapping.model == "occupancy" || (config.mapping.model == "auto" && uncertain)) {
+    if (maps_on_grid(config)) {
       std::vector<RandomStream> streams;
       for (std::uint32_t i = 0; i < starts.size(); ++i)
         streams.push_back(kernel.stream(i, "mapping-noise"));

@@ -408,4 +408,12 @@ ConfigKeys<NetworkConfig> network_keys() {
           }}};
 }
 
+bool readings_uncertain(const CoverageConfig& c) {
+  return c.localization.type != LocalizationConfig{}.type || c.sensor.noise_sigma > 0.0;
+}
+
+bool maps_on_grid(const CoverageConfig& c) {
+  return c.mapping.model == "occupancy" || (c.mapping.model == "auto" && readings_uncertain(c));
+}
+
 }  // namespace covsim

@@ -92,6 +92,12 @@ struct MappingConfig {
   friend bool operator==(const MappingConfig&, const MappingConfig&) = default;
 };
 
+// Whether the robots' readings are uncertain (range noise, or a localization other than
+// exact), and so whether a robot that maps Ω maps on an occupancy grid (mapping.model).
+struct CoverageConfig;
+bool readings_uncertain(const CoverageConfig& c);
+bool maps_on_grid(const CoverageConfig& c);
+
 // The robots' spacing: the side of a square of Ω's area shared out among n robots.
 double robot_spacing(const Environment& env, std::size_t n);
 

@@ -418,9 +418,7 @@ void check_mapping(const JsonValue& root, CoverageConfig& c) {
                     "know Ω cannot compute",
                     c.law.type));
   // The polygon map names the walls a reading saw, which an uncertain reading cannot tell.
-  const bool uncertain =
-      c.localization.type != LocalizationConfig{}.type || c.sensor.noise_sigma > 0.0;
-  if (c.mapping.model == "polygons" && uncertain)
+  if (c.mapping.model == "polygons" && readings_uncertain(c))
     root.at("mapping").at("model").fail(
         "the polygon map takes the walls each reading saw as exact, which readings with range "
         "noise or placed by an uncertain position are not: use \"occupancy\" or \"auto\"");

@@ -33,7 +33,6 @@ import argparse
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -92,29 +91,7 @@ def overrides(known, rng, loss):
     return sets
 
 
-def build_of(covsim):
-    """The build of the covsim program, as final.json's provenance gives it: (commit, dirty)
-    from `covsim --version` ("commit 0123456789ab, dirty; ...")."""
-    text = subprocess.run([str(covsim), "--version"], text=True, stdout=subprocess.PIPE,
-                          check=True).stdout
-    match = re.search(r"commit ([0-9a-f]+|unknown)(, dirty)?", text)
-    if not match:
-        raise study.StudyError(f"{covsim} --version: no commit in '{text.strip()}'")
-    return match.group(1), match.group(2) is not None
-
-
 BUILD = None  # set by main(): the build a cached run must come from to be reused
-
-
-def cached(final):
-    """Whether final.json is there and was written by this build (a run by another would mix
-    builds in one table). Two dirty builds of one commit cannot be told apart."""
-    if not final.exists():
-        return False
-    provenance = json.loads(final.read_text()).get("provenance", {})
-    commit, dirty = BUILD
-    return provenance.get("commit", "")[:len(commit)] == commit and \
-        provenance.get("dirty") == dirty
 
 
 def run(covsim, job):
@@ -123,7 +100,7 @@ def run(covsim, job):
     scenario, known, rng, loss, seed = job
     folder = WORK / name(*job)
     final = folder / "final.json"
-    if not cached(final):
+    if not study.made_by(final, BUILD):
         partial = folder.with_name(folder.name + ".partial")
         shutil.rmtree(partial, ignore_errors=True)
         args = [str(covsim), "run", str(study.ROOT / "scenarios" / f"{scenario}.json"),
@@ -276,7 +253,7 @@ def run_paper(covsim, job):
     scenario, rng = job
     folder = WORK / f"paper-{scenario}-r{'inf' if rng is None else f'{rng:g}'}"
     final = folder / "final.json"
-    if not cached(final):
+    if not study.made_by(final, BUILD):
         partial = folder.with_name(folder.name + ".partial")
         shutil.rmtree(partial, ignore_errors=True)
         args = [str(covsim), "run", str(study.ROOT / "scenarios" / f"{scenario}.json"),
@@ -398,7 +375,7 @@ def main():
     if not os.access(covsim, os.X_OK):
         raise study.StudyError(f"--covsim: {covsim} is not an executable")
     global BUILD
-    BUILD = build_of(covsim)
+    BUILD = study.build_of(covsim)
     seeds = list(range(1, args.seeds + 1))
     jobs = jobs_of(seeds)
     paper = paper_jobs()

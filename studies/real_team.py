@@ -119,27 +119,7 @@ def overrides(scenario, planner, loc, noise, team):
 # Runs
 
 
-def build_of(covsim):
-    """(commit, dirty) of the covsim program, from `covsim --version`."""
-    text = subprocess.run([str(covsim), "--version"], text=True, stdout=subprocess.PIPE,
-                          check=True).stdout
-    match = re.search(r"commit ([0-9a-f]+|unknown)(, dirty)?", text)
-    if not match:
-        raise study.StudyError(f"{covsim} --version: no commit in '{text.strip()}'")
-    return match.group(1), match.group(2) is not None
-
-
 BUILD = None  # set by main(): the build a cached run must come from to be reused
-
-
-def cached(final):
-    """Whether final.json is there and was written by this build."""
-    if not final.exists():
-        return False
-    provenance = json.loads(final.read_text()).get("provenance", {})
-    commit, dirty = BUILD
-    return provenance.get("commit", "")[:len(commit)] == commit and \
-        provenance.get("dirty") == dirty
 
 
 KEEP_GOING = False  # set by main(): --keep-going
@@ -165,7 +145,7 @@ def run(covsim, job):
     again by the next study."""
     folder = WORK / name(*job)
     final = folder / "final.json"
-    if not cached(final):
+    if not study.made_by(final, BUILD):
         partial = folder.with_name(folder.name + ".partial")
         shutil.rmtree(partial, ignore_errors=True)
         args = command(*job, str(partial))
@@ -379,7 +359,7 @@ def main():
     if not os.access(covsim, os.X_OK):
         raise study.StudyError(f"--covsim: {covsim} is not an executable")
     global BUILD
-    BUILD = build_of(covsim)
+    BUILD = study.build_of(covsim)
     jobs = jobs_of()
     WORK.mkdir(parents=True, exist_ok=True)
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:

@@ -10,6 +10,7 @@ the docs.
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -34,6 +35,29 @@ SEEDS = 20
 
 class StudyError(Exception):
     """A study that cannot produce its results: a failed run, a missing column."""
+
+
+def build_of(covsim):
+    """The build of a covsim program, as final.json's provenance gives it: (commit, dirty)
+    from `covsim --version` ("commit 0123456789ab, dirty; ...")."""
+    text = subprocess.run([str(covsim), "--version"], text=True, stdout=subprocess.PIPE,
+                          check=True).stdout
+    match = re.search(r"commit ([0-9a-f]+|unknown)(, dirty)?", text)
+    if not match:
+        raise StudyError(f"{covsim} --version: no commit in '{text.strip()}'")
+    return match.group(1), match.group(2) is not None
+
+
+def made_by(final, build):
+    """Whether final.json is there and was written by `build` (build_of's): a run by another
+    would mix builds in one table. Two dirty builds of one commit cannot be told apart."""
+    if not final.exists():
+        return False
+    provenance = json.loads(final.read_text()).get("provenance", {})
+    commit, dirty = build
+    return provenance.get("commit", "")[:len(commit)] == commit and \
+        provenance.get("dirty") == dirty
+
 
 
 # ---------------------------------------------------------------------------------------

@@ -101,7 +101,7 @@ def scenario_of(row, name):
         # Its stall window counts planner steps, and with kinematics a step in a local
         # minimum's oscillation can take a second (a body turning round); each stall gives a
         # robot one loop-1 update, so two stalled robots restart each other until their
-        # virtual generators rest: 50 steps made the ns-3 row stuck only at 1975 s.
+        # virtual generators rest: 50 steps made the ns-3 row stuck only at 1663 s.
         s["planner"]["stall_window"] = 10
     if row["bodies"] == "orca":
         robots["radius"] = RADIUS

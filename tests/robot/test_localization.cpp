@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "robot/dead_reckoning.hpp"
@@ -60,6 +61,30 @@ AxisStats errors(World& w) {
   return s;
 }
 
+// The estimate's lag behind robot 0 driven along x at `speed`, a motion step every `dt`
+// with the estimate read after it (as loop 2 does), the frames after the motion at their
+// instants, for 3 s: the largest error, and the largest once `latency` and a frame have
+// passed. `each` is called after every step.
+struct Lag {
+  double worst = 0.0, settled = 0.0;
+};
+Lag drive(
+    World& w, double speed, double dt, double latency, const std::function<void()>& each = [] {}) {
+  Lag lag;
+  const EventKind step = w.kernel.add_kind("step", [&](Kernel& k, const Event&) {
+    w.move(0, {speed * dt, 0.0});
+    const double error = distance(w.loc->estimate(0), w.real[0]);
+    lag.worst = std::max(lag.worst, error);
+    if (k.now() > SimTime::from_seconds(latency + 0.1)) lag.settled = std::max(lag.settled, error);
+    each();
+  });
+  w.kernel.schedule_periodic(Period::from_seconds(dt), SimTime::from_seconds(dt), step, 0,
+                             event_class::loop2);
+  w.loc->start(SimTime::zero());
+  w.kernel.run_until(SimTime::from_seconds(3.0));
+  return lag;
+}
+
 }  // namespace
 
 TEST_CASE("exact localization builds nothing: the controller uses the positions",
@@ -107,19 +132,7 @@ TEST_CASE("a late fix leaves a moving robot's estimate behind by its speed times
   World w(
       5, 1, "tracking",
       params({{"rate", 10.0}, {"latency", latency}, {"noise", 0.0}, {"compensated", compensated}}));
-  // A motion step every 10 ms along x, the estimate read after it (as loop 2 does), and the
-  // frames after the motion at their instants.
-  double worst = 0.0, settled = 0.0;
-  const EventKind step = w.kernel.add_kind("step", [&](Kernel& k, const Event&) {
-    w.move(0, {speed * dt, 0.0});
-    const double error = distance(w.loc->estimate(0), w.real[0]);
-    worst = std::max(worst, error);
-    if (k.now() > SimTime::from_seconds(latency + 0.1)) settled = std::max(settled, error);
-  });
-  w.kernel.schedule_periodic(Period::from_seconds(dt), SimTime::from_seconds(dt), step, 0,
-                             event_class::loop2);
-  w.loc->start(SimTime::zero());
-  w.kernel.run_until(SimTime::from_seconds(3.0));
+  const auto [worst, settled] = drive(w, speed, dt, latency);
   if (compensated) {
     // The odometry's motion since the capture added: nothing lost but rounding.
     CHECK(worst < 1e-12);
@@ -197,18 +210,9 @@ TEST_CASE("a remote-controlled robot's estimate is the last fix; a frame may mis
           params({{"rate", 10.0}, {"latency", latency}, {"noise", 0.0}, {"remote", true}}));
   // Robot 0 moves along x; the estimate stays at the last fix between fixes (no odometry),
   // which is where the robot was at the capture, latency before it arrived.
-  double worst = 0.0, settled = 0.0;
-  const EventKind step = w.kernel.add_kind("step", [&](Kernel& k, const Event&) {
-    w.move(0, {speed * dt, 0.0});
-    const double error = distance(w.loc->estimate(0), w.real[0]);
-    worst = std::max(worst, error);
-    if (k.now() > SimTime::from_seconds(latency + 0.1)) settled = std::max(settled, error);
+  const auto [worst, settled] = drive(w, speed, dt, latency, [&] {
     CHECK(w.loc->odometry(0) == w.loc->estimate(0));  // the planner works from the fix
   });
-  w.kernel.schedule_periodic(Period::from_seconds(dt), SimTime::from_seconds(dt), step, 0,
-                             event_class::loop2);
-  w.loc->start(SimTime::zero());
-  w.kernel.run_until(SimTime::from_seconds(3.0));
   // Up to a frame period of motion more than the latency's.
   CHECK(settled > speed * latency);
   CHECK(worst <= speed * (latency + 0.1) * (1 + 1e-9) + 1e-12);
